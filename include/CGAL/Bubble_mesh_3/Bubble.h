@@ -31,15 +31,18 @@ one region and move during relaxation.
 template <class GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel>
 struct Bubble
 {
+  /// point type of the traits
   typedef typename GeomTraits::Point_3 Point_3;
 
-  Point_3 center;
-  double radius = 0.;
+  Point_3 center;                       ///< centre, a mesh vertex in the end
+  double radius = 0.;                   ///< radius, from the sizing field
   std::size_t region = no_index;        ///< region of an interior bubble
   std::size_t surface_point = no_index; ///< model point of a surface bubble
   bool is_fixed = false;                ///< surface bubbles never move
 
+  /// a bubble at the origin with radius 0
   Bubble() {}
+  /// a bubble with all its fields given
   Bubble(const Point_3& c, double r, std::size_t reg, std::size_t sp, bool fixed)
     : center(c), radius(r), region(reg), surface_point(sp), is_fixed(fixed) {}
 };

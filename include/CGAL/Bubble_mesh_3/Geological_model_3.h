@@ -43,33 +43,35 @@ template <class GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel
 class Geological_model_3
 {
 public:
-  typedef GeomTraits                     Geom_traits;
-  typedef typename GeomTraits::FT        FT;
-  typedef typename GeomTraits::Point_3   Point_3;
-  typedef std::array<std::size_t, 3>     Triangle;
+  typedef GeomTraits                     Geom_traits; ///< the geometric traits
+  typedef typename GeomTraits::FT        FT;          ///< number type
+  typedef typename GeomTraits::Point_3   Point_3;     ///< point type
+  typedef std::array<std::size_t, 3>     Triangle;    ///< three point indices
 
   /// a surface piece: all its triangles separate the same two regions
   struct Patch
   {
-    std::string name;
+    std::string name;                ///< name, e.g. the surface it comes from
     std::size_t positive_region = 0; ///< region on the side the triangle normals point to
     std::size_t negative_region = 0; ///< region on the other side
+    /// `true` for a surface inside one region (same region on both sides)
     bool is_inside_region() const { return positive_region == negative_region; }
   };
 
   /// a rock body (region 0 is the outside of the model)
   struct Region
   {
-    std::string name;
+    std::string name; ///< name of the body, e.g. the formation
   };
 
   /// where an element came from, for error messages (file and line, 0 = unknown)
   struct Source
   {
-    std::string file;
-    std::size_t line = 0;
+    std::string file;      ///< file name, empty when built in memory
+    std::size_t line = 0;  ///< line number, 0 when unknown
   };
 
+  /// an empty model: no points, only region 0 (the outside)
   Geological_model_3() { regions_.push_back(Region{"outside"}); }
 
   // ---- building -------------------------------------------------------------
@@ -133,7 +135,9 @@ public:
     patches_.at(patch).negative_region = negative_region;
   }
 
+  /// renames region `r`
   void set_region_name(std::size_t r, const std::string& name) { regions_.at(r).name = name; }
+  /// renames patch `p`
   void set_patch_name(std::size_t p, const std::string& name) { patches_.at(p).name = name; }
 
   /// replaces the point at `i` (readers use it when merging coincident points)
@@ -144,28 +148,43 @@ public:
 
   /// the name of the file the model was read from (empty if built in memory)
   void set_file_name(const std::string& f) { file_name_ = f; }
+  /// the name of the file the model was read from
   const std::string& file_name() const { return file_name_; }
 
   // ---- access ---------------------------------------------------------------
 
+  /// number of points
   std::size_t number_of_points() const { return points_.size(); }
+  /// number of triangles
   std::size_t number_of_triangles() const { return triangles_.size(); }
+  /// number of patches
   std::size_t number_of_patches() const { return patches_.size(); }
   /// number of regions, not counting the outside (region 0)
   std::size_t number_of_regions() const { return regions_.size() - 1; }
 
+  /// all points
   const std::vector<Point_3>& points() const { return points_; }
+  /// point `i`
   const Point_3& point(std::size_t i) const { return points_[i]; }
+  /// all triangles
   const std::vector<Triangle>& triangles() const { return triangles_; }
+  /// triangle `t`
   const Triangle& triangle(std::size_t t) const { return triangles_[t]; }
+  /// the patch triangle `t` belongs to
   std::size_t patch_of_triangle(std::size_t t) const { return triangle_patch_[t]; }
+  /// the patch of every triangle
   const std::vector<std::size_t>& triangle_patches() const { return triangle_patch_; }
+  /// all patches
   const std::vector<Patch>& patches() const { return patches_; }
+  /// patch `p`
   const Patch& patch(std::size_t p) const { return patches_[p]; }
   /// regions, index 0 being the outside
   const std::vector<Region>& regions() const { return regions_; }
+  /// region `r` (0 is the outside)
   const Region& region(std::size_t r) const { return regions_[r]; }
+  /// where triangle `t` was read from
   const Source& triangle_source(std::size_t t) const { return triangle_sources_[t]; }
+  /// where point `i` was read from
   const Source& point_source(std::size_t i) const { return point_sources_[i]; }
 
   /// "file:line: " for an element's source, or the model's file name, or nothing

@@ -23,6 +23,7 @@ index, coordinates.
 class Geological_model_error : public std::runtime_error
 {
 public:
+  /// an error with its message (what and where)
   explicit Geological_model_error(const std::string& what) : std::runtime_error(what) {}
 };
 
