@@ -1,0 +1,75 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_IO_READER_PARAMETERS_H
+#define CGAL_BUBBLE_MESH_3_IO_READER_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <map>
+#include <string>
+#include <utility>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/// \ingroup PkgBubbleMesh3IO
+/// the two regions an object of a surface file separates: (positive side, negative side),
+/// by region name; the name `outside` stands for region 0
+typedef std::map<std::string, std::pair<std::string, std::string> > Region_assignment;
+
+namespace internal_np {
+enum merge_tolerance_t { merge_tolerance };
+enum region_assignment_t { region_assignment };
+enum region_assignment_file_t { region_assignment_file };
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_BUBBLE_MESH_3_IO_PARAMETER(NAME, TYPE)                                              \
+  inline Named_function_parameters<TYPE, internal_np::NAME##_t> NAME(const TYPE& v)              \
+  {                                                                                              \
+    return Named_function_parameters<TYPE, internal_np::NAME##_t>(v);                            \
+  }                                                                                              \
+  template <class T, class Tag, class Base>                                                      \
+  Named_function_parameters<TYPE, internal_np::NAME##_t, Named_function_parameters<T, Tag, Base> > \
+  NAME(const TYPE& v, const Named_function_parameters<T, Tag, Base>& np)                         \
+  {                                                                                              \
+    return Named_function_parameters<TYPE, internal_np::NAME##_t,                                \
+                                     Named_function_parameters<T, Tag, Base> >(v, np);           \
+  }
+
+/// \ingroup PkgBubbleMesh3IO
+/// readers merge points closer than this fraction of the bounding-box diagonal;
+/// 0 (the default) merges identical coordinates only
+CGAL_BUBBLE_MESH_3_IO_PARAMETER(merge_tolerance, double)
+/// \ingroup PkgBubbleMesh3IO
+/// `read_gocad_tsurf()`: the regions each TSurf object separates, instead of one body per object
+CGAL_BUBBLE_MESH_3_IO_PARAMETER(region_assignment, Region_assignment)
+/// \ingroup PkgBubbleMesh3IO
+/// `read_gocad_tsurf()`: a text file giving the region assignment, see `read_region_assignment()`
+CGAL_BUBBLE_MESH_3_IO_PARAMETER(region_assignment_file, std::string)
+
+#undef CGAL_BUBBLE_MESH_3_IO_PARAMETER
+
+} // namespace parameters
+
+namespace IO {
+namespace internal {
+
+template <class NP>
+double merge_tolerance(const NP& np)
+{
+  return CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, Bubble_mesh_3::internal_np::merge_tolerance), 0.);
+}
+
+} // namespace internal
+} // namespace IO
+
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_IO_READER_PARAMETERS_H
