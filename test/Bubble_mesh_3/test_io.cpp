@@ -10,6 +10,8 @@
 #include <CGAL/Bubble_mesh_3/merge_coincident_points.h>
 #include <CGAL/Bubble_mesh_3/IO/read_multibody_obj.h>
 #include <CGAL/Bubble_mesh_3/IO/write_multibody_obj.h>
+#include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
+#include <CGAL/Real_timer.h>
 
 #include <cassert>
 #include <cmath>
@@ -216,9 +218,62 @@ static void test_obj_two_boxes()
   }
 }
 
+static const char* real_models[] = {"modelA1.ml", "modelA2.ml", "modelA5.ml", "CloudSpin_fixed.ml"};
+static const std::string shared_dir = std::string(BUBBLE_MESH_3_SHARED_DATA_DIR) + "/";
+
+static bool have_shared_data()
+{
+  std::ifstream probe(shared_dir + real_models[0]);
+  if(!probe) std::cout << "SKIP: real models not found in " << shared_dir << " (the folder is optional)\n";
+  return bool(probe);
+}
+
+static void test_real_models()
+{
+  std::cout << "GOCAD Model3d: real models\n";
+  if(!have_shared_data()) return;
+  for(const char* f : real_models)
+  {
+    Model m;
+    CGAL::Real_timer timer;
+    timer.start();
+    BIO::read_gocad_model3d(shared_dir + f, m);
+    timer.stop();
+    std::cout << "  read " << f << " in " << timer.time() << " s\n";
+    check_volumes(m, f);
+    std::size_t inside = 0;
+    for(const auto& p : m.patches()) inside += p.is_inside_region();
+    std::cout << "    " << inside << " patches inside a region\n";
+
+    // .ml -> multi-body OBJ -> model: same regions, triangles, patches, volumes
+    std::stringstream obj;
+    BIO::write_multibody_obj(obj, m);
+    Model back;
+    timer.reset();
+    timer.start();
+    BIO::read_multibody_obj(obj, std::string(f) + ".obj", back);
+    timer.stop();
+    assert(back.number_of_regions() == m.number_of_regions());
+    assert(back.number_of_triangles() == m.number_of_triangles());
+    assert(back.number_of_patches() == m.number_of_patches());
+    assert(back.number_of_points() == m.number_of_points());
+    const std::vector<double> v1 = CGAL::Bubble_mesh_3::region_volumes(m), v2 = CGAL::Bubble_mesh_3::region_volumes(back);
+    double worst = 0;
+    for(std::size_t r = 0; r < v1.size(); ++r)
+    {
+      assert(back.region(r).name == m.region(r).name);
+      worst = (std::max)(worst, relative_error(v1[r], v2[r]));
+    }
+    std::cout << "    multi-body OBJ round trip (" << obj.str().size() << " bytes, read in " << timer.time()
+              << " s): same counts, worst relative volume difference " << worst << "\n";
+    assert(worst < 1e-12);
+  }
+}
+
 int main()
 {
   test_obj_two_boxes();
+  test_real_models();
   std::cout << "test_io: all checks passed\n";
   return EXIT_SUCCESS;
 }

@@ -8,12 +8,15 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_error.h>
 
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <istream>
 #include <string>
 #include <string_view>
@@ -43,6 +46,13 @@ inline std::string quoted(std::string_view s, std::size_t max_length = 40)
   }
   if(s.size() > max_length) r += "...";
   return r + "'";
+}
+
+inline std::string point_text(double x, double y, double z)
+{
+  std::ostringstream s;
+  s << std::setprecision(17) << "(" << x << " " << y << " " << z << ")";
+  return s.str();
 }
 
 inline std::string trim(std::string_view s)

@@ -9,13 +9,12 @@
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_error.h>
 #include <CGAL/Bubble_mesh_3/merge_coincident_points.h>
+#include <CGAL/Bubble_mesh_3/IO/internal/Line_reader.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <map>
-#include <sstream>
-#include <iomanip>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -55,13 +54,6 @@ struct Body_soup
   std::vector<std::string> patch_names;
   std::vector<Body> bodies;
 };
-
-inline std::string point_text(double x, double y, double z)
-{
-  std::ostringstream s;
-  s << std::setprecision(17) << "(" << x << " " << y << " " << z << ")";
-  return s.str();
-}
 
 /*
  Regions: one per body that has triangles and is not an inside surface, in
