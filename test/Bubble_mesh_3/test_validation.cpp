@@ -1,0 +1,393 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Validation of geological models: every class of bad input gives a located
+// message, good inputs pass, and the summary's numbers are right.
+
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/IO/read_multibody_obj.h>
+#include <CGAL/Bubble_mesh_3/geological_model_summary.h>
+#include <CGAL/Bubble_mesh_3/validate_geological_model.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Real_timer.h>
+
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <initializer_list>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef CGAL::Bubble_mesh_3::Geological_model_3<K> Model;
+namespace BM = CGAL::Bubble_mesh_3;
+
+namespace {
+
+const std::string bad_dir = std::string(BUBBLE_MESH_3_TEST_DATA_DIR) + "/bad/";
+
+// Builds models from grids of squares; coincident points are shared.
+struct Builder
+{
+  Model model;
+  std::map<std::array<double, 3>, std::size_t> index;
+
+  std::size_t point(const Point& p)
+  {
+    const std::array<double, 3> key{{p.x(), p.y(), p.z()}};
+    auto it = index.find(key);
+    if(it != index.end()) return it->second;
+    const std::size_t i = model.add_point(p);
+    index[key] = i;
+    return i;
+  }
+
+  // the rectangle o + [0,1] u + [0,1] v as nu x nv squares of two triangles, normals along u x v
+  void grid(std::size_t patch, const Point& o, const Vector& u, const Vector& v, int nu, int nv)
+  {
+    for(int i = 0; i < nu; ++i)
+      for(int j = 0; j < nv; ++j)
+      {
+        // a*u/nu rather than (a/nu)*u: exact for the sizes used here, so that grids share points
+        auto P = [&](int a, int b) { return point(o + (u * double(a)) / double(nu) + (v * double(b)) / double(nv)); };
+        const std::size_t p00 = P(i, j), p10 = P(i + 1, j), p11 = P(i + 1, j + 1), p01 = P(i, j + 1);
+        model.add_triangle(p00, p10, p11, patch);
+        model.add_triangle(p00, p11, p01, patch);
+      }
+  }
+
+  // the six faces of the box [a,b], n squares per unit length, normals outward
+  void box(std::size_t patch, const Point& a, const Point& b, int n, bool inward = false)
+  {
+    const double dx = b.x() - a.x(), dy = b.y() - a.y(), dz = b.z() - a.z();
+    const Vector X(dx, 0, 0), Y(0, dy, 0), Z(0, 0, dz);
+    const int nx = std::max(1, int(n * dx)), ny = std::max(1, int(n * dy)), nz = std::max(1, int(n * dz));
+    auto face = [&](const Point& o, const Vector& u, const Vector& v, int nu, int nv) {
+      if(inward) grid(patch, o, v, u, nv, nu);
+      else grid(patch, o, u, v, nu, nv);
+    };
+    face(a, Y, X, ny, nx);          // z = a.z, normal -z
+    face(a + Z, X, Y, nx, ny);      // z = b.z, normal +z
+    face(a, X, Z, nx, nz);          // y = a.y, normal -y
+    face(a + Y, Z, X, nz, nx);      // y = b.y, normal +y
+    face(a, Z, Y, nz, ny);          // x = a.x, normal -x
+    face(a + X, Y, Z, ny, nz);      // x = b.x, normal +x
+  }
+};
+
+// Two layers in the box [0,3]x[0,3]x[0,2] (n squares per unit length, n a power of two so that
+// coordinates are exact and the fault's top meets the horizon's points) and a fault in the
+// lower layer: a vertical rectangle on x = 1 that hangs from the horizon down to z = 0.5 and
+// ends there, inside the layer.
+Model two_layers_with_fault(int n = 1)
+{
+  Builder b;
+  Model& m = b.model;
+  const std::size_t lower = m.add_region("Lower"), upper = m.add_region("Upper");
+  const std::size_t base = m.add_patch("Base", 0, lower);
+  const std::size_t horizon = m.add_patch("Horizon", upper, lower);
+  const std::size_t top = m.add_patch("Top", 0, upper);
+  const std::size_t lower_sides = m.add_patch("Lower sides", 0, lower);
+  const std::size_t upper_sides = m.add_patch("Upper sides", 0, upper);
+  const std::size_t fault = m.add_patch("Fault", lower, lower);
+  const Vector X(3, 0, 0), Y(0, 3, 0);
+  b.grid(base, Point(0, 0, 0), Y, X, 3 * n, 3 * n);
+  b.grid(horizon, Point(0, 0, 1), X, Y, 3 * n, 3 * n);
+  b.grid(top, Point(0, 0, 2), X, Y, 3 * n, 3 * n);
+  for(int layer = 0; layer < 2; ++layer)
+  {
+    const std::size_t p = layer == 0 ? lower_sides : upper_sides;
+    const Point o(0, 0, layer);
+    const Vector Z(0, 0, 1);
+    b.grid(p, o, Z, Y, n, 3 * n);          // x = 0
+    b.grid(p, o + X, Y, Z, 3 * n, n);      // x = 3
+    b.grid(p, o, X, Z, 3 * n, n);          // y = 0
+    b.grid(p, o + Y, Z, X, n, 3 * n);      // y = 3
+  }
+  b.grid(fault, Point(1, 1, 0.5), Vector(0, 1, 0), Vector(0, 0, 0.5), n, std::max(1, n / 2));
+  return m;
+}
+
+Model unit_cube(const std::string& name = "Cube")
+{
+  Builder b;
+  const std::size_t r = b.model.add_region(name);
+  b.box(b.model.add_patch("Skin", 0, r), Point(0, 0, 0), Point(1, 1, 1), 1);
+  return b.model;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+std::string validation_message(const Model& m)
+{
+  try
+  {
+    BM::validate_geological_model(m);
+  }
+  catch(const BM::Geological_model_error& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+// `m` must be rejected with a message holding every one of `parts`
+void expect_error(const std::string& what, const Model& m, std::initializer_list<std::string> parts)
+{
+  const std::string msg = validation_message(m);
+  std::cout << "-- " << what << ":\n" << msg << "\n";
+  assert(!msg.empty());
+  for(const std::string& p : parts)
+  {
+    if(!contains(msg, p)) std::cerr << "missing in the message: \"" << p << "\"\n";
+    assert(contains(msg, p));
+  }
+  // the list of problems starts with the same one
+  const std::vector<std::string> problems = BM::geological_model_problems(m);
+  assert(!problems.empty() && problems.front() == msg);
+}
+
+Model read_bad(const std::string& file)
+{
+  Model m;
+  BM::IO::read_multibody_obj(bad_dir + file, m);
+  return m;
+}
+
+void expect_file_error(const std::string& file, std::initializer_list<std::string> parts)
+{
+  expect_error(file, read_bad(file), parts);
+}
+
+void test_good_models()
+{
+  const Model m = two_layers_with_fault();
+  BM::validate_geological_model(m);
+  assert(BM::geological_model_problems(m).empty());
+  std::cout << "two layers with a fault ending inside the lower one: " << m.number_of_triangles()
+            << " triangles, valid\n";
+
+  // the same, finer, and a body with a cavity (the cavity's surface faces into the cavity)
+  const Model fine = two_layers_with_fault(4);
+  BM::validate_geological_model(fine);
+  Builder b;
+  const std::size_t shell = b.model.add_region("Shell");
+  b.box(b.model.add_patch("Outer", 0, shell), Point(0, 0, 0), Point(3, 3, 3), 1);
+  b.box(b.model.add_patch("Cavity", 0, shell), Point(1, 1, 1), Point(2, 2, 2), 1, true);
+  BM::validate_geological_model(b.model);
+  const BM::Geological_model_summary s = BM::summarize_geological_model(b.model);
+  std::cout << "body with a cavity: valid, volume " << s.regions[0].volume << " (27 - 1)\n";
+  assert(std::abs(s.regions[0].volume - 26.) < 1e-12);
+
+  // two separate pieces of one region are fine too
+  Builder p;
+  const std::size_t r = p.model.add_region("Pieces");
+  const std::size_t skin = p.model.add_patch("Skin", 0, r);
+  p.box(skin, Point(0, 0, 0), Point(1, 1, 1), 1);
+  p.box(skin, Point(2, 0, 0), Point(3, 1, 1), 1);
+  BM::validate_geological_model(p.model);
+  std::cout << "region in two pieces: valid\n";
+}
+
+void test_bad_in_memory()
+{
+  {
+    Model m;
+    expect_error("empty model", m, {"empty", "no region and no triangle"});
+  }
+  {
+    Model m = unit_cube();
+    m.set_point(3, Point(std::numeric_limits<double>::quiet_NaN(), 0., 1.));
+    expect_error("NaN coordinate", m, {"not finite", "vertex 3 ", "nan"});
+  }
+  {
+    Model m = unit_cube();
+    m.set_patch_regions(0, 7, 0);
+    expect_error("unknown region id", m, {"patch 0 'Skin'", "region 7", "does not exist", "1 regions"});
+  }
+  {
+    Model m = unit_cube();
+    const std::size_t p = m.add_patch("Extra", 1, 1);
+    const auto t = m.triangle(5);
+    m.add_triangle(t[2], t[0], t[1], p);
+    expect_error("duplicate triangle", m, {"duplicate", "triangle 12 of patch 1 'Extra'", "triangle 5 of patch 0 'Skin'"});
+  }
+  {
+    Model m = unit_cube();
+    const std::size_t v = m.add_point(Point(0.5, 0.5, 0.5));
+    const std::size_t w = m.add_point(Point(1.5, 1.5, 1.5));
+    const std::size_t p = m.add_patch("Needle", 1, 1);
+    m.add_triangle(v, w, 0, p); // 0 = (0,0,0): collinear with v and w
+    expect_error("collinear triangle", m, {"degenerate", "triangle 12 of patch 1 'Needle'", "zero area", "vertex 9 (1.5, 1.5, 1.5)"});
+  }
+  {
+    Model m = unit_cube();
+    m.set_triangle(3, Model::Triangle{{2, 2, 5}});
+    expect_error("repeated vertex", m, {"degenerate", "triangle 3 of patch 0 'Skin' uses vertex 2"});
+  }
+  {
+    // the region on the wrong side of its (consistently oriented) patch
+    Model m = unit_cube();
+    m.set_patch_regions(0, 1, 0);
+    expect_error("negative volume", m, {"region 1 'Cube' has volume -1", "patch 0 'Skin' has it as positive region"});
+  }
+  {
+    // a region that no patch bounds
+    Model m = unit_cube();
+    m.add_region("Ghost");
+    expect_error("region without boundary", m, {"region 2 'Ghost' has no boundary"});
+  }
+  {
+    // a surface inside the region that pokes through its top: vertex outside
+    Model m = two_layers_with_fault();
+    const std::size_t q = m.add_point(Point(2, 2, 1.5));
+    const std::size_t r = m.add_point(Point(2, 2, 3)); // above the model
+    const std::size_t s = m.add_point(Point(2, 2.5, 1.5));
+    const std::size_t p = m.add_patch("Spike", 2, 2);
+    m.add_triangle(q, s, r, p);
+    expect_error("surface inside a region that leaves it", m,
+                 {"1 vertex lies outside", "patch 6 'Spike' lies inside region 2 'Upper'",
+                  "vertex " + std::to_string(r) + " (2, 2, 3)"});
+  }
+}
+
+void test_bad_files()
+{
+  expect_file_error("open_boundary.obj", {"not closed", "3 edges", "open_boundary.obj:15: ", "region 1 'Cube'",
+                                          "edge 1-5 (1, 0, 0)-(1, 0, 1)", "triangle 4 of patch 0"});
+  expect_file_error("nonmanifold_edge.obj", {"not manifold", "region 1 'TwoTets'", "edge 0-1 (0, 0, 0)-(1, 0, 0)",
+                                             "shared by 4 triangles"});
+  expect_file_error("nonmanifold_vertex.obj", {"not manifold", "pinched", "region 1 'Hourglass'",
+                                               "vertex 0 (0, 0, 0) joins 2 separate fans"});
+  expect_file_error("inconsistent_orientation.obj", {"not consistently oriented", "3 edges", "region 1 'Cube'",
+                                                     "inconsistent_orientation.obj:13: ", "triangle 2 of patch 0"});
+  expect_file_error("inside_surface_outside.obj", {"leave", "patch 1 'Fault' lies inside region 1 'Cube'",
+                                                   "vertex 10 (0.5, 0.8, 1.5)", "inside_surface_outside.obj:"});
+  expect_file_error("crossing_bodies.obj", {"surfaces intersect", "patch 0 'A/outside'", "patch 1 'B/outside'",
+                                            "crossing_bodies.obj:", "near ("});
+  expect_file_error("overlapping_coplanar.obj", {"surfaces intersect", "'Lower/outside'", "'Upper/outside'",
+                                                 "overlapping_coplanar.obj:14: triangle 2 of patch 0", "(line 33) overlap near"});
+  expect_file_error("degenerate_triangle.obj", {"degenerate", "zero area", "degenerate_triangle.obj:25: ",
+                                                "triangle 13 of patch 0", "vertex 8 (0.5, 0, 0)"});
+  expect_file_error("wrong_cavity.obj", {"wrongly nested", "region 1 'Shell'", "faces outward but lies inside",
+                                         "wrong_cavity.obj:"});
+
+  // the list of all problems: the open cube also crosses a second body
+  {
+    Model m = read_bad("crossing_bodies.obj");
+    const std::vector<std::string> problems = BM::geological_model_problems(m, BM::parameters::maximum_number_of_reported_elements(2));
+    assert(problems.size() == 1);
+    assert(contains(problems[0], "... and "));
+    std::cout << "crossing bodies: " << problems.size() << " problem, message limited to 2 lines plus a count\n";
+  }
+}
+
+void test_summary()
+{
+  Model cube = unit_cube("Cube \"A\"\\B");
+  const BM::Geological_model_summary s = BM::summarize_geological_model(cube);
+  const auto& r = s.regions.at(0);
+  std::cout << "unit cube: volume " << r.volume << ", edges " << r.min_edge_length << " / " << r.median_edge_length
+            << " / " << r.max_edge_length << ", min angle " << r.min_angle << ", " << r.number_of_points
+            << " points, " << r.number_of_boundary_triangles << " triangles\n";
+  assert(std::abs(r.volume - 1.) < 1e-14 && std::abs(s.volume - 1.) < 1e-14);
+  assert(r.min_edge_length == 1. && r.median_edge_length == 1.);
+  assert(std::abs(r.max_edge_length - std::sqrt(2.)) < 1e-14);
+  assert(std::abs(r.min_angle - 45.) < 1e-9 && std::abs(s.min_angle - 45.) < 1e-9);
+  assert(r.number_of_points == 8 && r.number_of_boundary_triangles == 12 && r.number_of_inside_triangles == 0);
+  assert(s.number_of_poor_triangles == 0);
+  assert(s.bbox.xmin() == 0. && s.bbox.zmax() == 1.);
+
+  std::ostringstream text;
+  BM::write_summary_text(text, s);
+  std::cout << text.str();
+  assert(!contains(text.str(), "warning"));
+
+  std::ostringstream json;
+  BM::write_summary_json(json, s);
+  const std::string j = json.str();
+  int depth = 0, min_depth = 0;
+  bool in_string = false;
+  for(std::size_t i = 0; i < j.size(); ++i)
+  {
+    if(in_string)
+    {
+      if(j[i] == '\\') ++i;
+      else if(j[i] == '"') in_string = false;
+      continue;
+    }
+    if(j[i] == '"') in_string = true;
+    else if(j[i] == '{' || j[i] == '[') ++depth;
+    else if(j[i] == '}' || j[i] == ']') min_depth = std::min(min_depth, --depth);
+  }
+  assert(depth == 0 && min_depth == 0 && !in_string);
+  assert(contains(j, "\"name\": \"Cube \\\"A\\\"\\\\B\""));
+  assert(contains(j, "\"volume\": 1"));
+  const std::string json_file = std::string(BUBBLE_MESH_3_BINARY_DIR) + "/test_validation_summary.json";
+  {
+    std::ofstream out(json_file);
+    out << j;
+  }
+  if(std::system("command -v python3 >/dev/null 2>&1") == 0)
+  {
+    const int rc = std::system(("python3 -c 'import json,sys; json.load(open(sys.argv[1]))' '" + json_file + "'").c_str());
+    assert(rc == 0);
+    std::cout << "summary JSON parses with python3\n";
+  }
+  else
+    std::cout << "SKIP: python3 not found, JSON checked for balanced brackets only\n";
+
+  // two layers with a fault: per-region numbers, the surface inside, the global min angle
+  const Model m = two_layers_with_fault();
+  const BM::Geological_model_summary t = BM::summarize_geological_model(m, BM::parameters::poor_angle_bound(30.));
+  std::ostringstream text2;
+  BM::write_summary_text(text2, t);
+  std::cout << text2.str();
+  assert(t.regions.size() == 2 && t.surfaces_inside_regions.size() == 1);
+  assert(std::abs(t.regions[0].volume - 9.) < 1e-12 && std::abs(t.regions[1].volume - 9.) < 1e-12);
+  assert(std::abs(t.volume - 18.) < 1e-12);
+  assert(t.regions[0].number_of_inside_triangles == 2 && t.regions[1].number_of_inside_triangles == 0);
+  assert(t.surfaces_inside_regions[0].name == "Fault" && t.surfaces_inside_regions[0].region == 1);
+  // the fault's 1 x 0.5 rectangle has the smallest angle, atan(1/2)
+  const double expected = std::atan(0.5) * 180. / 3.14159265358979323846;
+  assert(std::abs(t.min_angle - expected) < 1e-9 && t.min_angle_patch_name == "Fault");
+  assert(std::abs(t.regions[0].min_angle - expected) < 1e-9 && std::abs(t.regions[1].min_angle - 45.) < 1e-9);
+  assert(std::abs(t.regions[0].min_edge_length - 0.5) < 1e-14);
+  assert(t.number_of_poor_triangles == 2);
+  assert(contains(text2.str(), "warning: input min angle 26.6 deg at triangle") &&
+         contains(text2.str(), "(patch 'Fault')") && contains(text2.str(), "--remesh-surfaces"));
+}
+
+// A layered box with a fine grid: validation must stay fast.
+void test_timing()
+{
+  const Model m = two_layers_with_fault(16);
+  CGAL::Real_timer timer;
+  timer.start();
+  BM::validate_geological_model(m, CGAL::parameters::verbose(true)); // times of each check on std::cerr
+  timer.stop();
+  std::cout << "synthetic model, " << m.number_of_triangles() << " triangles: validated in " << timer.time() << " s\n";
+  assert(timer.time() < 5.); // generous: shared CI machines; about 0.1 s expected
+}
+
+} // namespace
+
+int main()
+{
+  test_good_models();
+  test_bad_in_memory();
+  test_bad_files();
+  test_summary();
+  test_timing();
+  std::cout << "test_validation: OK\n";
+  return EXIT_SUCCESS;
+}
