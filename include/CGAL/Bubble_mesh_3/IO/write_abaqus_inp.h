@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/IO/internal/mesh_arrays.h>
 #include <CGAL/Bubble_mesh_3/IO/internal/write_atomically.h>
 
+#include <cctype>
 #include <map>
 #include <ostream>
 #include <set>
@@ -28,14 +29,18 @@ class Abaqus_names
 public:
   Abaqus_names() : unique_(true, 80) {}
 
-  /// `prefix_` is put before a name that does not start with a letter
-  std::string operator()(const std::string& name, const std::string& prefix, const std::string& suffix = "")
+  /// the Abaqus name for `name`; `prefix_` goes before a name that does not start with a letter
+  std::string operator()(const std::string& name, const std::string& prefix)
   {
     std::string s = replace_non_word_characters(name);
     if(s.empty() || !std::isalpha(static_cast<unsigned char>(s[0]))) s = prefix + "_" + s;
-    // room for the suffix, and for a "_N" that makes the name unique
-    if(s.size() + suffix.size() > 76) s.resize(76 - suffix.size());
-    return unique_(s + suffix);
+    return derived(s, "");
+  }
+
+  /// a name made of an Abaqus name and a suffix, shortened to leave room for a "_N"
+  std::string derived(const std::string& name, const std::string& suffix)
+  {
+    return unique_(name.substr(0, 76 - suffix.size()) + suffix);
   }
 
 private:
@@ -89,8 +94,8 @@ inline void write_abaqus_inp(std::ostream& os, const Mesh_arrays& m)
   {
     Patch_sets& p = patches[l];
     p.surface = names(m.patch_name(l), "S");
-    if(!p.negative_faces.empty()) p.negative_surface = names(m.patch_name(l), "S", "_NEG");
-    p.nset = names(m.patch_name(l), "S", "_NODES");
+    if(!p.negative_faces.empty()) p.negative_surface = names.derived(p.surface, "_NEG");
+    p.nset = names.derived(p.surface, "_NODES");
   }
 
   os << "*HEADING\nBubble_mesh_3 tetrahedral mesh: " << m.points.size() << " nodes, " << m.tets.size()

@@ -13,15 +13,15 @@
 #include <string>
 #include <vector>
 
-// The format as described by Itasca ("Itasca Grid Format", the FLAC3D 7 /
-// 3DEC 7 manuals at docs.itascacg.com, `zone import`): `*` starts a comment
-// line; `G id x y z` gridpoints, `Z T4 id g1 g2 g3 g4` zones, `F T3 id g1 g2
-// g3` faces; ids are positive, zones and faces numbered apart; a group line
-// `ZGROUP "name" SLOT 1` / `FGROUP "name" SLOT 1` is followed by lines of
-// ids until the next line that starts with a letter or `*`. That the first
-// four gridpoints of a T4 must form a right-handed system (positive
-// orientation) is what meshio's FLAC3D writer enforces; we could not check
-// it against FLAC3D itself.
+// Sources for the format: Itasca's "Itasca Grid Format" page and the
+// `zone import` command of the FLAC3D 7 / 3DEC 7 manuals (docs.itascacg.com):
+// `*` starts a comment line, blank lines are ignored, `G id x y z` defines a
+// gridpoint and `Z type id g...` a zone; ids are positive and need not be
+// consecutive. For what those pages do not show (the `F T3` face lines, zone
+// and face ids counted apart, the group lines `ZGROUP "name" SLOT 1` followed
+// by lines of ids, the first four gridpoints of a `T4` right-handed, i.e.
+// positively oriented) the source is meshio's FLAC3D reader and writer. We
+// could not check the file against FLAC3D itself.
 
 namespace CGAL {
 namespace Bubble_mesh_3 {

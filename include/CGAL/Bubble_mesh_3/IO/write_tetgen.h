@@ -57,8 +57,15 @@ inline void write_tetgen_files(const std::string& filename, const Mesh_arrays& m
     throw std::runtime_error("cannot write TetGen files '" + filename + "': the name must end in .node");
   const std::string base = filename.substr(0, dot);
   // the .node file, the one asked for, comes last: when it is there, so are the others
-  write_atomically(base + ".ele", [&](std::ostream& os) { write_tetgen_ele(os, m); });
-  write_atomically(base + ".face", [&](std::ostream& os) { write_tetgen_face(os, m); });
+  try
+  {
+    write_atomically(base + ".ele", [&](std::ostream& os) { write_tetgen_ele(os, m); });
+    write_atomically(base + ".face", [&](std::ostream& os) { write_tetgen_face(os, m); });
+  }
+  catch(const std::exception& e)
+  {
+    throw std::runtime_error("cannot write TetGen files '" + filename + "': " + e.what());
+  }
   write_atomically(filename, [&](std::ostream& os) { write_tetgen_node(os, m); });
 }
 

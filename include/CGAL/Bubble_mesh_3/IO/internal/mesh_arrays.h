@@ -15,8 +15,8 @@
 #include <CGAL/Handle_hash_function.h>
 
 #include <algorithm>
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cstddef>
 #include <functional>
@@ -63,7 +63,7 @@ struct Mesh_arrays
   /// ask, toward the smaller region index
   std::size_t oriented_by_regions = 0;
   std::size_t oriented_by_geometry = 0;
-  std::size_t oriented_arbitrarily = 0;
+  std::size_t oriented_by_default = 0;
 
   std::string region_name(int r) const
   {
@@ -294,7 +294,7 @@ Mesh_arrays extract_mesh_arrays(const C3T3& c3t3, const Mesh_labels& labels)
       // nothing to ask: the normal points to the smaller region index, so
       // outward on the boundary of the mesh
       c_positive = rc <= rm ? 1 : -1;
-      ++m.oriented_arbitrarily;
+      ++m.oriented_by_default;
     }
 
     std::array<std::size_t, 2> sides{{tet_of(c), tet_of(mirror.first)}};
