@@ -11,7 +11,37 @@
 #include <CGAL/Bubble_mesh_3/IO/read_multibody_obj.h>
 #include <CGAL/Bubble_mesh_3/IO/write_multibody_obj.h>
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
+#include <CGAL/Bubble_mesh_3/IO/read_gocad_tsurf.h>
+#include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
+#include <CGAL/Bubble_mesh_3/IO/read_face_graphs.h>
+#include <CGAL/Bubble_mesh_3/IO/write_face_graphs.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#ifdef BUBBLE_MESH_3_HAS_OPENMESH
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+// double coordinates: real models sit at 1e6 m, where floats lose the volumes
+struct OpenMesh_double_traits : public OpenMesh::DefaultTraits
+{
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+typedef OpenMesh::TriMesh_ArrayKernelT<OpenMesh_double_traits> OpenMesh_mesh;
+// CGAL 5.5.1's OpenMesh point map writes floats: this one keeps the doubles
+struct OpenMesh_double_point_map
+{
+  typedef boost::graph_traits<OpenMesh_mesh>::vertex_descriptor key_type;
+  typedef CGAL::Epick::Point_3 value_type;
+  typedef CGAL::Epick::Point_3 reference;
+  typedef boost::writable_property_map_tag category;
+  OpenMesh_mesh* mesh;
+  friend void put(const OpenMesh_double_point_map& m, key_type v, const value_type& p)
+  {
+    m.mesh->set_point(v, OpenMesh::Vec3d(p.x(), p.y(), p.z()));
+  }
+};
+#endif
 
 #include <cassert>
 #include <cmath>
@@ -218,6 +248,152 @@ static void test_obj_two_boxes()
   }
 }
 
+template <class FaceGraph>
+static void boundary_to_face_graph(const Model& m, std::size_t r, FaceGraph& g)
+{
+  CGAL::Bubble_mesh_3::region_boundary_to_face_graph(m, r, g);
+}
+#ifdef BUBBLE_MESH_3_HAS_OPENMESH
+static void boundary_to_face_graph(const Model& m, std::size_t r, OpenMesh_mesh& g)
+{
+  CGAL::Bubble_mesh_3::region_boundary_to_face_graph(m, r, g, CGAL::parameters::vertex_point_map(OpenMesh_double_point_map{&g}));
+}
+#endif
+
+// ---------------------------------------------------------------------------
+// region boundaries -> face graphs -> model: same regions and volumes; the
+// face graphs' own volumes (PMP) agree with region_volumes()
+
+template <class FaceGraph>
+static void face_graph_round_trip(const Model& m, const std::string& what)
+{
+  std::vector<FaceGraph> bodies(m.number_of_regions());
+  std::vector<std::string> names;
+  const std::vector<double> vol = CGAL::Bubble_mesh_3::region_volumes(m);
+  double worst_pmp = 0;
+  for(std::size_t r = 1; r <= m.number_of_regions(); ++r)
+  {
+    boundary_to_face_graph(m, r, bodies[r - 1]);
+    names.push_back(m.region(r).name);
+    assert(CGAL::is_closed(bodies[r - 1]));
+    worst_pmp = (std::max)(worst_pmp, relative_error(CGAL::to_double(CGAL::Polygon_mesh_processing::volume(bodies[r - 1])), vol[r]));
+  }
+  Model back;
+  CGAL::Bubble_mesh_3::geological_model_from_face_graphs(bodies, back, names);
+  std::size_t boundary_triangles = 0;
+  for(std::size_t t = 0; t < m.number_of_triangles(); ++t) boundary_triangles += !m.patch(m.patch_of_triangle(t)).is_inside_region();
+  assert(back.number_of_regions() == m.number_of_regions());
+  assert(back.number_of_triangles() == boundary_triangles);
+  const std::vector<double> vol2 = CGAL::Bubble_mesh_3::region_volumes(back);
+  double worst = 0;
+  for(std::size_t r = 0; r < vol.size(); ++r)
+  {
+    assert(back.region(r).name == m.region(r).name);
+    worst = (std::max)(worst, relative_error(vol[r], vol2[r]));
+  }
+  std::cout << "    " << what << " round trip: " << back.number_of_regions() << " closed bodies, "
+            << back.number_of_triangles() << " boundary triangles, worst relative volume difference " << worst
+            << " (PMP::volume of the bodies vs region_volumes: " << worst_pmp << ")\n";
+  std::cout << std::flush;
+  assert(worst < 1e-12 && worst_pmp < 1e-9);
+}
+
+static void test_small_files()
+{
+  std::cout << "hand-written files in " << test_data << "\n";
+  for(const char* f : {"two_boxes.ml", "two_boxes_depth.ml", "two_boxes.ts"})
+  {
+    Model m;
+    BIO::read_geological_model(test_data + f, m);
+    check_volumes(m, f);
+    assert(m.number_of_regions() == 2);
+    assert(m.region(1).name == "lower" && m.region(2).name == "upper");
+    assert(m.number_of_triangles() == 22 && m.number_of_points() == 12);
+    const std::vector<double> vol = CGAL::Bubble_mesh_3::region_volumes(m);
+    assert(std::abs(vol[1] - 1) < 1e-12 && std::abs(vol[2] - 1) < 1e-12);
+    face_graph_round_trip<CGAL::Surface_mesh<K::Point_3> >(m, "Surface_mesh");
+  }
+  {
+    // parts are named after their surface, with a suffix where a surface has several
+    Model m;
+    BIO::read_gocad_model3d(test_data + "two_boxes.ml", m);
+    assert(m.number_of_patches() == 3);
+    assert(m.patch(0).name == "boundary_1" && m.patch(1).name == "boundary_2" && m.patch(2).name == "horizon");
+    // horizon: lower below, upper above, whatever the file's ZPOSITIVE
+    Model d;
+    BIO::read_gocad_model3d(test_data + "two_boxes_depth.ml", d);
+    for(const Model* x : {&m, &d})
+    {
+      const auto& tri = x->triangle(x->number_of_triangles() - 1);
+      const K::Vector_3 n = CGAL::cross_product(x->point(tri[1]) - x->point(tri[0]), x->point(tri[2]) - x->point(tri[0]));
+      const auto& h = x->patch(2);
+      assert((n.z() > 0) == (h.positive_region == 2) && (n.z() > 0) == (h.negative_region == 1));
+    }
+    std::cout << "  Model3d Elevation and Depth: horizon between 'lower' and 'upper' on the right sides\n";
+  }
+  {
+    // region assignment: a box and a fault inside it
+    Model m;
+    BIO::read_gocad_tsurf(test_data + "box_and_fault.ts", m,
+                          BP::region_assignment_file(test_data + "box_and_fault_regions.txt"));
+    assert(m.number_of_regions() == 1 && m.region(1).name == "rock");
+    assert(m.number_of_patches() == 2 && m.patch(1).name == "fault" && m.patch(1).is_inside_region());
+    const std::vector<double> vol = CGAL::Bubble_mesh_3::region_volumes(m);
+    assert(std::abs(vol[1] - 1) < 1e-12);
+    CGAL::Bubble_mesh_3::Region_assignment a;
+    a["box"] = std::make_pair(std::string("outside"), std::string("rock"));
+    a["fault"] = std::make_pair(std::string("rock"), std::string("rock"));
+    Model m2;
+    BIO::read_gocad_tsurf(test_data + "box_and_fault.ts", m2, BP::region_assignment(a));
+    assert(m2.number_of_triangles() == m.number_of_triangles() && m2.number_of_patches() == 2);
+    std::cout << "  TSurf with a region assignment: 1 region of volume " << vol[1] << ", fault inside it\n";
+    a.erase("fault");
+    expect_error("object missing from the assignment", [&] { BIO::read_gocad_tsurf(test_data + "box_and_fault.ts", m2, BP::region_assignment(a)); },
+                 {"box_and_fault.ts:", "'fault'", "not in the region assignment"});
+    // without the assignment the fault would be a body of its own: an open one, which validation reports
+  }
+  {
+    // the same bodies as OBJ: read_geological_model dispatches on the extension
+    Model m;
+    BIO::read_geological_model(test_data + "two_boxes.ts", m);
+    const std::string obj = binary_dir + "/test_io_two_boxes_from_ts.OBJ";
+    BIO::write_multibody_obj(obj, m);
+    Model back;
+    BIO::read_geological_model(obj, back, BP::merge_tolerance(0.));
+    assert(back.number_of_triangles() == 22 && back.number_of_regions() == 2);
+  }
+
+  // bad input: every message names the file, the line and the element at fault
+  Model m;
+  auto read = [&](const std::string& f) { return [&m, f] { BIO::read_geological_model(test_data + f, m); }; };
+  expect_error("empty file", read("empty.ml"), {"empty.ml", "empty file"});
+  expect_error("truncated file", read("truncated.ml"), {"truncated.ml:67:", "vertex 10"});
+  expect_error("garbage text", read("garbage.ml"), {"garbage.ml:1:", "not a GOCAD Model3d file"});
+  expect_error("binary bytes", read("binary.ml"), {"binary.ml:"});
+  expect_error("TRGL with a missing vertex", read("missing_vertex.ts"), {"missing_vertex.ts:22:", "vertex 99", "'lower'"});
+  expect_error("NaN coordinate", read("nan_vertex.ts"), {"nan_vertex.ts:16:", "vertex 3", "'nan'"});
+  expect_error("inf coordinate", read("inf_vertex.ml"), {"inf_vertex.ml:67:", "vertex 10", "'inf'"});
+  expect_error("REGION with an unknown TFACE", read("bad_region_tface.ml"),
+               {"bad_region_tface.ml:28:", "REGION 'upper'", "TFACE 7"});
+  expect_error("unknown extension", read("two_boxes.stl"), {"two_boxes.stl", "'.stl'", ".ml", ".ts", ".obj"});
+  expect_error("missing file", read("no_such_file.ml"), {"no_such_file.ml", "cannot open"});
+  expect_error("truncated in the header", [&] {
+    std::ifstream f(test_data + "two_boxes.ml");
+    std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    std::istringstream is(text.substr(0, text.find("REGION 6")));
+    BIO::read_gocad_model3d(is, "cut.ml", m);
+  }, {"cut.ml:", "no END", "header"});
+  expect_error("key triangle in no part", [&] {
+    std::ifstream f(test_data + "two_boxes.ml");
+    std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    const std::string key = "  0.0 0.0 2.0\n";
+    text.replace(text.find(key), key.size(), "  0.0 0.5 2.0\n");
+    std::istringstream is(text);
+    BIO::read_gocad_model3d(is, "key.ml", m);
+  }, {"key.ml:15:", "TFACE 2", "(0 0.5 2)", "'boundary'"});
+  assert(m.number_of_triangles() == 0);  // nothing half-built
+}
+
 static const char* real_models[] = {"modelA1.ml", "modelA2.ml", "modelA5.ml", "CloudSpin_fixed.ml"};
 static const std::string shared_dir = std::string(BUBBLE_MESH_3_SHARED_DATA_DIR) + "/";
 
@@ -267,12 +443,18 @@ static void test_real_models()
     std::cout << "    multi-body OBJ round trip (" << obj.str().size() << " bytes, read in " << timer.time()
               << " s): same counts, worst relative volume difference " << worst << "\n";
     assert(worst < 1e-12);
+
+    face_graph_round_trip<CGAL::Surface_mesh<K::Point_3> >(m, "Surface_mesh");
+#ifdef BUBBLE_MESH_3_HAS_OPENMESH
+    face_graph_round_trip<OpenMesh_mesh>(m, "OpenMesh TriMesh");
+#endif
   }
 }
 
 int main()
 {
   test_obj_two_boxes();
+  test_small_files();
   test_real_models();
   std::cout << "test_io: all checks passed\n";
   return EXIT_SUCCESS;

@@ -1,0 +1,67 @@
+GOCAD Model3d 1
+HEADER {
+name: two_boxes
+}
+GOCAD_ORIGINAL_COORDINATE_SYSTEM
+NAME Default
+ZPOSITIVE Elevation
+END_ORIGINAL_COORDINATE_SYSTEM
+TSURF boundary
+TSURF horizon
+TFACE 1  boundary boundary
+  0.0 0.0 0.0
+  0.0 1.0 0.0
+  1.0 1.0 0.0
+TFACE 2  boundary boundary
+  0.0 0.0 2.0
+  1.0 1.0 2.0
+  0.0 1.0 2.0
+TFACE 3  none horizon
+  0.0 0.0 1.0
+  1.0 1.0 1.0
+  0.0 1.0 1.0
+REGION 4  Universe 
+  +1  +2  0
+REGION 5  lower 
+  -1  -3  0
+REGION 6  upper 
+  -2  +3
+  0
+LAYER all
+  5  6  0
+END
+GOCAD TSurf 1
+HEADER {
+name: boundary
+*solid*color: 1 0 0 1
+}
+GOCAD_ORIGINAL_COORDINATE_SYSTEM
+NAME Default
+ZPOSITIVE Elevation
+END_ORIGINAL_COORDINATE_SYSTEM
+PROPERTY_CLASS_HEADER Z {
+is_z: on
+}
+TFACE
+VRTX 1 0.0 0.0 2.0
+VRTX 2 1.0 0.0 2.0
+PVRTX 3 1.0 1.0 2.0 7
+VRTX 4 0.0 1.0 2.0
+VRTX 5 0.0 0.0 1.0
+PVRTX 6 1.0 0.0 1.0 7
+VRTX 7 1.0 1.0 1.0
+VRTX 8 0.0 1.0 1.0
+TRGL 1 2 3
+TRGL 1 3 4
+TRGL 5 6 2
+TRGL 5 2 1
+TRGL 6 7 3
+TRGL 6 3 2
+TRGL 7 8 4
+TRGL 7 4 3
+TRGL 8 5 1
+TRGL 8 1 4
+BSTONE 1
+TFACE
+PVRTX 9 0.0 0.0 0.0 7
+VRTX 10
