@@ -5,6 +5,7 @@
 // message, good inputs pass, and the summary's numbers are right.
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
 #include <CGAL/Bubble_mesh_3/IO/read_multibody_obj.h>
 #include <CGAL/Bubble_mesh_3/geological_model_summary.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
@@ -16,6 +17,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <iostream>
@@ -159,7 +161,10 @@ void expect_error(const std::string& what, const Model& m, std::initializer_list
 Model read_bad(const std::string& file)
 {
   Model m;
-  BM::IO::read_multibody_obj(bad_dir + file, m);
+  if(file.size() > 3 && file.compare(file.size() - 3, 3, ".ml") == 0)
+    BM::IO::read_gocad_model3d(bad_dir + file, m);
+  else
+    BM::IO::read_multibody_obj(bad_dir + file, m);
   return m;
 }
 
@@ -216,13 +221,6 @@ void test_bad_in_memory()
   }
   {
     Model m = unit_cube();
-    const std::size_t p = m.add_patch("Extra", 1, 1);
-    const auto t = m.triangle(5);
-    m.add_triangle(t[2], t[0], t[1], p);
-    expect_error("duplicate triangle", m, {"duplicate", "triangle 12 of patch 1 'Extra'", "triangle 5 of patch 0 'Skin'"});
-  }
-  {
-    Model m = unit_cube();
     const std::size_t v = m.add_point(Point(0.5, 0.5, 0.5));
     const std::size_t w = m.add_point(Point(1.5, 1.5, 1.5));
     const std::size_t p = m.add_patch("Needle", 1, 1);
@@ -233,12 +231,6 @@ void test_bad_in_memory()
     Model m = unit_cube();
     m.set_triangle(3, Model::Triangle{{2, 2, 5}});
     expect_error("repeated vertex", m, {"degenerate", "triangle 3 of patch 0 'Skin' uses vertex 2"});
-  }
-  {
-    // the region on the wrong side of its (consistently oriented) patch
-    Model m = unit_cube();
-    m.set_patch_regions(0, 1, 0);
-    expect_error("negative volume", m, {"region 1 'Cube' has volume -1", "patch 0 'Skin' has it as positive region"});
   }
   {
     // a region that no patch bounds
@@ -278,6 +270,11 @@ void test_bad_files()
                                                  "overlapping_coplanar.obj:14: triangle 2 of patch 0", "(line 33) overlap near"});
   expect_file_error("degenerate_triangle.obj", {"degenerate", "zero area", "degenerate_triangle.obj:25: ",
                                                 "triangle 13 of patch 0", "vertex 8 (0.5, 0, 0)"});
+  // the OBJ reader flips bodies of negative volume and rejects repeated triangles: GOCAD files
+  expect_file_error("wrong_side.ml", {"non-positive volume", "wrong_side.ml: ", "region 1 'Cube' has volume -1",
+                                      "patch 0 'skin' has it as positive region"});
+  expect_file_error("duplicate_triangle.ml", {"duplicate", "duplicate_triangle.ml:60: triangle 12 of patch 1 'copy'",
+                                              "duplicates triangle 2 of patch 0 'skin' (line 41)", "vertices 4, 5, 6"});
   expect_file_error("wrong_cavity.obj", {"wrongly nested", "region 1 'Shell'", "faces outward but lies inside",
                                          "wrong_cavity.obj:"});
 
@@ -379,6 +376,48 @@ void test_timing()
   assert(timer.time() < 5.); // generous: shared CI machines; about 0.1 s expected
 }
 
+// The real GOCAD models, when ../shared is there: all valid, and read and validated fast.
+void test_real_models()
+{
+  const std::filesystem::path dir(BUBBLE_MESH_3_SHARED_DATA_DIR);
+  if(!std::filesystem::is_directory(dir))
+  {
+    std::cout << "SKIP: real models: " << dir.string() << " not found\n";
+    return;
+  }
+  std::vector<std::string> files;
+  for(const auto& entry : std::filesystem::directory_iterator(dir))
+    if(entry.path().extension() == ".ml") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  if(files.empty()) std::cout << "SKIP: real models: no .ml file in " << dir.string() << "\n";
+  for(const std::string& f : files)
+  {
+    Model m;
+    CGAL::Real_timer timer;
+    timer.start();
+    BM::IO::read_gocad_model3d(f, m);
+    const double read_time = timer.time();
+    timer.reset();
+    const std::vector<std::string> problems = BM::geological_model_problems(m);
+    const double validate_time = timer.time();
+    for(const std::string& p : problems) std::cerr << p << "\n";
+    assert(problems.empty());
+    const BM::Geological_model_summary s = BM::summarize_geological_model(m);
+    std::cout << std::filesystem::path(f).filename().string() << ": " << s.number_of_regions << " regions, "
+              << s.number_of_triangles << " triangles, " << s.surfaces_inside_regions.size()
+              << " surfaces inside regions, min angle " << s.min_angle << " deg; valid; read " << read_time
+              << " s + validate " << validate_time << " s (assertions on)\n";
+    double sum = 0.;
+    for(const auto& r : s.regions)
+    {
+      assert(r.volume > 0.);
+      sum += r.volume;
+    }
+    assert(std::abs(sum - s.volume) <= 1e-9 * s.volume); // the regions fill the model
+    assert(read_time + validate_time < 10.); // about 0.25 s for the largest without assertions or load
+  }
+}
+
 } // namespace
 
 int main()
@@ -388,6 +427,7 @@ int main()
   test_bad_files();
   test_summary();
   test_timing();
+  test_real_models();
   std::cout << "test_validation: OK\n";
   return EXIT_SUCCESS;
 }
