@@ -529,19 +529,19 @@ private:
     return check_nesting();
   }
 
-  // The signed volume of a set of sides, relative to the centre of the model's box.
-  double signed_volume(const std::vector<std::size_t>& side_ids) const
+  // The signed volume of a set of sides, relative to the point `o` (the centre of the model's
+  // box, so that far-off coordinates lose no digits), and their bounding box.
+  std::pair<double, Bbox_3> volume_and_box(const std::vector<std::size_t>& side_ids, const double o[3]) const
   {
-    const Bbox_3 box = bbox(m_);
-    const double o[3] = {0.5 * (box.xmin() + box.xmax()), 0.5 * (box.ymin() + box.ymax()),
-                         0.5 * (box.zmin() + box.zmax())};
     double vol = 0.;
+    Bbox_3 box;
     for(std::size_t s : side_ids)
     {
       double q[3][3];
       for(int k = 0; k < 3; ++k)
       {
         const Point_3& p = m_.point(sides_[s].v[k]);
+        box += p.bbox();
         q[k][0] = CGAL::to_double(p.x()) - o[0];
         q[k][1] = CGAL::to_double(p.y()) - o[1];
         q[k][2] = CGAL::to_double(p.z()) - o[2];
@@ -549,7 +549,7 @@ private:
       vol += (q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
               q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0])) / 6.;
     }
-    return vol;
+    return std::make_pair(vol, box);
   }
 
   std::unique_ptr<Mesh> make_mesh(const std::vector<std::size_t>& side_ids) const
@@ -604,15 +604,29 @@ private:
       while(c1 < components.size() && sides_[components[c1].front()].region == r) ++c1;
       if(c1 - c0 > 1)
       {
-        std::vector<std::unique_ptr<Mesh> > meshes;
-        std::vector<std::unique_ptr<Side_of_mesh> > side_of;
+        const Bbox_3 model_box = bbox(m_);
+        const double o[3] = {0.5 * (model_box.xmin() + model_box.xmax()), 0.5 * (model_box.ymin() + model_box.ymax()),
+                             0.5 * (model_box.zmin() + model_box.zmax())};
         std::vector<double> volume;
+        std::vector<Bbox_3> box;
         for(std::size_t c = c0; c < c1; ++c)
         {
-          meshes.push_back(make_mesh(components[c]));
-          side_of.emplace_back(new Side_of_mesh(*meshes.back()));
-          volume.push_back(signed_volume(components[c]));
+          const std::pair<double, Bbox_3> vb = volume_and_box(components[c], o);
+          volume.push_back(vb.first);
+          box.push_back(vb.second);
         }
+        // point location in a component, built only for the components whose box holds a query
+        std::vector<std::unique_ptr<Mesh> > meshes(c1 - c0);
+        std::vector<std::unique_ptr<Side_of_mesh> > side_of(c1 - c0);
+        auto side = [&](std::size_t d, const Point_3& p) {
+          if(!CGAL::do_overlap(box[d - c0], p.bbox())) return ON_UNBOUNDED_SIDE;
+          if(!side_of[d - c0])
+          {
+            meshes[d - c0] = make_mesh(components[d]);
+            side_of[d - c0].reset(new Side_of_mesh(*meshes[d - c0]));
+          }
+          return (*side_of[d - c0])(p);
+        };
         for(std::size_t c = c0; c < c1; ++c)
         {
           // winding number of the other surfaces at a vertex of this one
@@ -626,7 +640,7 @@ private:
             for(std::size_t d = c0; d < c1 && !on_boundary; ++d)
             {
               if(d == c) continue;
-              const Bounded_side bs = (*side_of[d - c0])(m_.point(v));
+              const Bounded_side bs = side(d, m_.point(v));
               if(bs == ON_BOUNDARY) on_boundary = true; // a contact; the intersection check reports it
               else if(bs == ON_BOUNDED_SIDE) w += volume[d - c0] > 0. ? 1 : -1;
             }
