@@ -252,8 +252,59 @@ void test_bad_in_memory()
   }
 }
 
+// The box [0,4]^3 holding two one-triangle surfaces S1 and S2: to test the pair predicate.
+Model two_triangles_in_a_box(const std::array<Point, 3>& t1, const std::array<Point, 3>& t2)
+{
+  Builder b;
+  const std::size_t r = b.model.add_region("Box");
+  b.box(b.model.add_patch("Skin", 0, r), Point(0, 0, 0), Point(4, 4, 4), 1);
+  for(int k = 0; k < 2; ++k)
+  {
+    const auto& t = k == 0 ? t1 : t2;
+    const std::size_t p = b.model.add_patch(k == 0 ? "S1" : "S2", r, r);
+    b.model.add_triangle(b.point(t[0]), b.point(t[1]), b.point(t[2]), p);
+  }
+  return b.model;
+}
+
+void test_triangle_pairs()
+{
+  const Point v(1, 1, 1), a(3, 1, 1), c(1, 3, 1);
+  const std::array<Point, 3> t{{v, a, c}};
+  struct Case
+  {
+    const char* what;
+    std::array<Point, 3> other;
+    const char* expected; // nullptr: valid
+  };
+  const Case cases[] = {
+    {"common vertex, the other triangle pierces", {{v, Point(2.5, 1.2, 0.5), Point(1.2, 2.5, 1.5)}}, " intersect near "},
+    {"common vertex only", {{v, Point(0.5, 2, 2), Point(2, 0.5, 2)}}, nullptr},
+    {"common vertex, coplanar, overlapping", {{v, Point(2, 1.5, 1), Point(3, 3, 1)}}, " overlap near "},
+    {"common vertex, coplanar, apart", {{v, Point(0.5, 0.5, 1), Point(1, 0.5, 1)}}, nullptr},
+    {"common edge, bent", {{a, v, Point(2, 1, 3)}}, nullptr},
+    {"common edge, coplanar, folded over", {{a, v, Point(2, 2, 1)}}, " overlap near "},
+    {"common edge, coplanar, flat", {{a, v, Point(2, 0.5, 1)}}, nullptr},
+    {"a vertex on the other's edge", {{Point(2, 1, 1), Point(2, 0.5, 2), Point(2, 0.5, 0.5)}}, " intersect near (2, 1, 1)"},
+    {"a vertex inside the other", {{Point(1.5, 1.5, 1), Point(2, 2, 2), Point(2, 1, 2)}}, " intersect near (1.5, 1.5, 1)"},
+    {"apart", {{Point(1, 1, 2), Point(3, 1, 2), Point(1, 3, 2)}}, nullptr},
+  };
+  for(const Case& k : cases)
+  {
+    const std::string msg = validation_message(two_triangles_in_a_box(t, k.other));
+    std::cout << k.what << ": " << (msg.empty() ? std::string("valid") : msg.substr(msg.find('\n') + 3)) << "\n";
+    if(k.expected == nullptr)
+      assert(msg.empty());
+    else
+      assert(contains(msg, "surfaces intersect: 1 pair") && contains(msg, "patch 1 'S1'") &&
+             contains(msg, "patch 2 'S2'") && contains(msg, k.expected));
+  }
+}
+
 void test_bad_files()
 {
+  expect_file_error("self_intersecting.obj", {"surfaces intersect", "8 pairs", "self_intersecting.obj:13: triangle 0",
+                                              "and triangle 10 of patch 0 'Dented/outside' (line 23) intersect near"});
   expect_file_error("open_boundary.obj", {"not closed", "3 edges", "open_boundary.obj:15: ", "region 1 'Cube'",
                                           "edge 1-5 (1, 0, 0)-(1, 0, 1)", "triangle 4 of patch 0"});
   expect_file_error("nonmanifold_edge.obj", {"not manifold", "region 1 'TwoTets'", "edge 0-1 (0, 0, 0)-(1, 0, 0)",
@@ -424,6 +475,7 @@ int main()
 {
   test_good_models();
   test_bad_in_memory();
+  test_triangle_pairs();
   test_bad_files();
   test_summary();
   test_timing();
