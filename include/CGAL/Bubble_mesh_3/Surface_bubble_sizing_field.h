@@ -1,0 +1,225 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_SURFACE_BUBBLE_SIZING_FIELD_H
+#define CGAL_BUBBLE_MESH_3_SURFACE_BUBBLE_SIZING_FIELD_H
+
+#include <CGAL/Bubble_mesh_3/Bubble.h>
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/placement_parameters.h>
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+The default model of `BubbleSizingField`: the radius wanted at a point of a
+region, interpolated from the surface bubbles of that region by the
+weight-point rule of METHOD.md (stage 2), times a per-region scale factor.
+
+For region `r`, let `r_min`, `r_max` be the smallest and largest radii of the
+surface bubbles on `r`'s boundary or on surfaces inside `r`, and
+`R0 = (r_max + r_min) / 2`. A surface bubble `j` of `r` is a weight point of
+`p` when `l_j = |p - c_j| < f (R0 + r_j)` (`f` = `interaction_range_factor`,
+1.5). With weight points `j = 1..n`:
+
+    R(p) = s_r * sum_j lambda_j r_j,   lambda_j = w_j / sum_k w_k,
+
+with `w_j = 1 / l_j` (`Radius_weighting::INVERSE_DISTANCE`, default: the
+closer, the heavier) or `w_j = 1 / r_j` (`Radius_weighting::INVERSE_RADIUS`,
+the paper's printed formula). At a surface bubble's centre (`l_j = 0`) the
+inverse-distance rule gives that bubble's radius. Without weight point,
+`R(p) = s_r * R0`. `s_r` is entry `r` of `region_scale_factors` (1 when
+absent): below 1 asks for a denser mesh in region `r`, above 1 a coarser one,
+without touching its surface.
+
+Only surface bubbles whose `surface_point` is a model point are used. Weight
+points are found with a `CGAL::Kd_tree` per region (built in the
+constructor), so a query costs O(log n + number of weight points), and
+concurrent queries are safe. Copies share the trees.
+
+\cgalModels `BubbleSizingField`
+*/
+template <class GeomTraits>
+class Surface_bubble_sizing_field
+{
+public:
+  typedef GeomTraits Geom_traits;
+  typedef typename GeomTraits::Point_3 Point_3;
+
+private:
+  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<GeomTraits> > Traits;
+  typedef CGAL::Kd_tree<Traits> Tree;
+  typedef CGAL::Fuzzy_sphere<Traits> Sphere;
+
+  struct Region_data
+  {
+    std::vector<Point_3> centres;
+    std::vector<double> radii;
+    double r_min = 0., r_max = 0., r0 = 0.;
+    std::unique_ptr<Tree> tree;
+  };
+
+public:
+  /*!
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{radius_weighting}
+      \cgalParamDescription{weights of the weight points}
+      \cgalParamType{`Radius_weighting`}
+      \cgalParamDefault{`Radius_weighting::INVERSE_DISTANCE`}
+    \cgalParamNEnd
+    \cgalParamNBegin{interaction_range_factor}
+      \cgalParamDescription{`f` in the weight-point test `l_j < f (R0 + r_j)`}
+      \cgalParamType{double}
+      \cgalParamDefault{1.5 (the force law's range)}
+    \cgalParamNEnd
+    \cgalParamNBegin{region_scale_factors}
+      \cgalParamDescription{entry `r` multiplies the radius wanted in region `r`}
+      \cgalParamType{std::vector<double>}
+      \cgalParamDefault{empty: 1 everywhere}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+  */
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Surface_bubble_sizing_field(const Geological_model_3<GeomTraits>& model,
+                              const std::vector<Bubble<GeomTraits> >& surface_bubbles,
+                              const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    weighting_ = choose_parameter(get_parameter(np, internal_np::radius_weighting),
+                                  Radius_weighting::INVERSE_DISTANCE);
+    range_factor_ = choose_parameter(get_parameter(np, internal_np::interaction_range_factor), 1.5);
+    scale_ = choose_parameter(get_parameter(np, internal_np::region_scale_factors), std::vector<double>());
+
+    // (region, point) incidences, so that each region gets its own bubbles
+    std::vector<std::pair<std::size_t, std::size_t> > incidences;
+    for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+    {
+      const auto& patch = model.patch(model.patch_of_triangle(t));
+      for(std::size_t v : model.triangle(t))
+      {
+        incidences.emplace_back(patch.positive_region, v);
+        if(patch.negative_region != patch.positive_region) incidences.emplace_back(patch.negative_region, v);
+      }
+    }
+    std::sort(incidences.begin(), incidences.end());
+    incidences.erase(std::unique(incidences.begin(), incidences.end()), incidences.end());
+
+    std::vector<std::size_t> bubble_of_point(model.number_of_points(), no_index);
+    for(std::size_t b = 0; b < surface_bubbles.size(); ++b)
+      if(surface_bubbles[b].surface_point < model.number_of_points())
+        bubble_of_point[surface_bubbles[b].surface_point] = b;
+
+    auto regions = std::make_shared<std::vector<Region_data> >(model.number_of_regions() + 1);
+    for(const auto& rp : incidences)
+    {
+      const std::size_t b = bubble_of_point[rp.second];
+      if(b == no_index) continue;
+      (*regions)[rp.first].centres.push_back(surface_bubbles[b].center);
+      (*regions)[rp.first].radii.push_back(surface_bubbles[b].radius);
+    }
+    (*regions)[0] = Region_data(); // the outside wants no bubble
+    for(Region_data& rd : *regions)
+    {
+      if(rd.radii.empty()) continue;
+      rd.r_min = *std::min_element(rd.radii.begin(), rd.radii.end());
+      rd.r_max = *std::max_element(rd.radii.begin(), rd.radii.end());
+      rd.r0 = 0.5 * (rd.r_min + rd.r_max);
+      std::vector<std::size_t> keys(rd.centres.size());
+      for(std::size_t i = 0; i < keys.size(); ++i) keys[i] = i;
+      rd.tree.reset(new Tree(keys.begin(), keys.end(), typename Tree::Splitter(),
+                             Traits(Point_map(rd.centres.data()))));
+      rd.tree->build(); // built now: later const queries may run concurrently
+    }
+    regions_ = regions;
+  }
+
+  /// the radius wanted at `p` in region `region`; 0 for the outside (region 0), an unknown region or a region without surface bubbles
+  double operator()(const Point_3& p, std::size_t region) const
+  {
+    if(region >= regions_->size()) return 0.;
+    const Region_data& rd = (*regions_)[region];
+    if(!rd.tree) return 0.;
+    return scale_factor(region) * unscaled_radius(rd, p);
+  }
+
+  /// `R0 = (r_max + r_min) / 2` of the surface bubbles of `region`, unscaled
+  double default_radius(std::size_t region) const
+  {
+    return region < regions_->size() ? (*regions_)[region].r0 : 0.;
+  }
+  /// smallest radius of the surface bubbles of `region`
+  double smallest_surface_radius(std::size_t region) const
+  {
+    return region < regions_->size() ? (*regions_)[region].r_min : 0.;
+  }
+  /// largest radius of the surface bubbles of `region`
+  double largest_surface_radius(std::size_t region) const
+  {
+    return region < regions_->size() ? (*regions_)[region].r_max : 0.;
+  }
+  /// the scale factor of `region` (1 unless `region_scale_factors` says otherwise)
+  double scale_factor(std::size_t region) const
+  {
+    return region < scale_.size() ? scale_[region] : 1.;
+  }
+
+private:
+  double unscaled_radius(const Region_data& rd, const Point_3& p) const
+  {
+    std::vector<std::size_t> near;
+    rd.tree->search(std::back_inserter(near),
+                    Sphere(p, range_factor_ * (rd.r0 + rd.r_max), 0., rd.tree->traits()));
+    std::sort(near.begin(), near.end()); // sums in a fixed order: same input, same bits
+
+    double weight_sum = 0., weighted = 0.;
+    double coincident_sum = 0.;
+    std::size_t coincident = 0;
+    for(std::size_t j : near)
+    {
+      const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, rd.centres[j])));
+      if(!(l < range_factor_ * (rd.r0 + rd.radii[j]))) continue;
+      double w = 1. / rd.radii[j];
+      if(weighting_ == Radius_weighting::INVERSE_DISTANCE)
+      {
+        // a bubble at p has an infinite weight: its radius wins
+        if(l == 0.) { coincident_sum += rd.radii[j]; ++coincident; continue; }
+        w = 1. / l;
+      }
+      weight_sum += w;
+      weighted += w * rd.radii[j];
+    }
+    if(coincident > 0) return coincident_sum / double(coincident);
+    return weight_sum > 0. ? weighted / weight_sum : rd.r0;
+  }
+
+  std::shared_ptr<const std::vector<Region_data> > regions_;
+  std::vector<double> scale_;
+  double range_factor_ = 1.5;
+  Radius_weighting weighting_ = Radius_weighting::INVERSE_DISTANCE;
+};
+
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_SURFACE_BUBBLE_SIZING_FIELD_H

@@ -1,0 +1,130 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_INTERNAL_PLACEMENT_PARAMETERS_H
+#define CGAL_BUBBLE_MESH_3_INTERNAL_PLACEMENT_PARAMETERS_H
+
+// Named parameters of the placement stage (surface bubbles, clustering,
+// cluster validity, sizing field, initial interior bubbles). They chain with
+// CGAL's own parameters: `parameters::cell_edge_factor(1.2).random_seed(7)`,
+// or, to append after a CGAL chain, the two-argument form
+// `parameters::cell_edge_factor(1.2, CGAL::parameters::random_seed(7))`.
+// CGAL tags reused here: `random_seed` (clustering and silhouette subsample),
+// `number_of_iterations` (Lloyd iterations of `K_means_clustering`).
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/// \ingroup PkgBubbleMesh3Ref
+/// How the weight-point rule of the initial radius weighs the nearby surface bubbles.
+enum class Radius_weighting
+{
+  INVERSE_DISTANCE, ///< lambda_j proportional to 1/d_j: the closer, the heavier (METHOD.md, default)
+  INVERSE_RADIUS    ///< lambda_j proportional to 1/r_j: the paper's printed formula
+};
+
+struct Region_placement_statistics;
+
+namespace internal_np {
+enum number_of_clusters_t { number_of_clusters };
+enum min_number_of_clusters_t { min_number_of_clusters };
+enum max_number_of_clusters_t { max_number_of_clusters };
+enum clustering_model_t { clustering_model };
+enum convergence_tolerance_t { convergence_tolerance };
+enum number_of_restarts_t { number_of_restarts };
+enum silhouette_sample_size_t { silhouette_sample_size };
+enum surface_radius_factor_t { surface_radius_factor };
+enum cell_edge_factor_t { cell_edge_factor };
+enum surface_clearance_factor_t { surface_clearance_factor };
+enum interaction_range_factor_t { interaction_range_factor };
+enum radius_weighting_t { radius_weighting };
+enum region_scale_factors_t { region_scale_factors };
+enum parallel_regions_t { parallel_regions };
+enum placement_statistics_t { placement_statistics };
+} // namespace internal_np
+
+namespace parameters {
+
+// CGAL's defaults and reused tags, reachable from this namespace too
+using CGAL::parameters::default_values;
+using CGAL::parameters::random_seed;
+using CGAL::parameters::number_of_iterations;
+
+// One function pair per tag: the one-argument form starts a chain, the
+// two-argument form appends to an existing chain (CGAL's or ours).
+#define CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(TYPE, NAME)                                     \
+  inline CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t>                          \
+  NAME(TYPE value)                                                                             \
+  {                                                                                            \
+    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t>(value);                \
+  }                                                                                            \
+  template <class T, class Tag, class Base>                                                    \
+  CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                                 \
+                                  CGAL::Named_function_parameters<T, Tag, Base> >              \
+  NAME(TYPE value, const CGAL::Named_function_parameters<T, Tag, Base>& np)                    \
+  {                                                                                            \
+    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                        \
+                                           CGAL::Named_function_parameters<T, Tag, Base> >(    \
+      value, np);                                                                              \
+  }
+
+/// fixed number of clusters per region; 0 (default) chooses it in [min, max]
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, number_of_clusters)
+/// smallest number of clusters tried (default 2)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, min_number_of_clusters)
+/// largest number of clusters tried (default 10)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, max_number_of_clusters)
+/// Lloyd stops when no centre moves more than this fraction of the bounding-box diagonal (default 1e-4)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, convergence_tolerance)
+/// k-means runs from this many k-means++ seedings and keeps the smallest SSE (default 3)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, number_of_restarts)
+/// above this many points the silhouette is computed on a seeded subsample of this size (default 2000)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, silhouette_sample_size)
+/// surface bubble radius = factor * mean incident edge length (default 0.5)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, surface_radius_factor)
+/// cell edge = factor * (r_max + r_min) / 2 (default 1)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, cell_edge_factor)
+/// a candidate must be at least factor * its radius from every surface triangle (default 1)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, surface_clearance_factor)
+/// surface bubble j is a weight point when l_ij < factor * (R0 + r_j) (default 1.5)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, interaction_range_factor)
+/// weights of the weight-point rule (default `Radius_weighting::INVERSE_DISTANCE`)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(Radius_weighting, radius_weighting)
+/// entry r multiplies the wanted radius in region r; missing entries are 1 (default empty)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::vector<double>, region_scale_factors)
+/// process regions (and candidates) with TBB when it is linked (default true); the result does not depend on it
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(bool, parallel_regions)
+/// where `place_initial_bubbles()` writes one `Region_placement_statistics` per region (default none)
+CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::vector<Region_placement_statistics>*, placement_statistics)
+
+#undef CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER
+
+/// the `KMeansClustering` model used by `place_initial_bubbles()` (default `K_means_clustering`)
+template <class Clustering>
+CGAL::Named_function_parameters<Clustering, internal_np::clustering_model_t>
+clustering_model(const Clustering& c)
+{
+  return CGAL::Named_function_parameters<Clustering, internal_np::clustering_model_t>(c);
+}
+
+template <class Clustering, class T, class Tag, class Base>
+CGAL::Named_function_parameters<Clustering, internal_np::clustering_model_t,
+                                CGAL::Named_function_parameters<T, Tag, Base> >
+clustering_model(const Clustering& c, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return CGAL::Named_function_parameters<Clustering, internal_np::clustering_model_t,
+                                         CGAL::Named_function_parameters<T, Tag, Base> >(c, np);
+}
+
+} // namespace parameters
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_INTERNAL_PLACEMENT_PARAMETERS_H
