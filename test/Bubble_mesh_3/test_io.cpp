@@ -298,6 +298,44 @@ static void face_graph_round_trip(const Model& m, const std::string& what)
   assert(worst < 1e-12 && worst_pmp < 1e-9);
 }
 
+static void test_merge_coincident_points()
+{
+  std::cout << "merge_coincident_points\n";
+  // a strip of triangles whose second row is stored twice, once shifted by 1e-9
+  Model m;
+  const std::size_t r = m.add_region("r");
+  const std::size_t p = m.add_patch("p", 0, r);
+  const int n = 2000;
+  for(int i = 0; i < n; ++i) m.add_point(K::Point_3(i, 0, 0));
+  for(int i = 0; i < n; ++i) m.add_point(K::Point_3(i, 1, 0));
+  for(int i = 0; i < n; ++i) m.add_point(K::Point_3(i + 1e-9, 1, 0));
+  for(int i = 0; i + 1 < n; ++i)
+  {
+    m.add_triangle(i, i + 1, n + i, p);           // on row 1
+    m.add_triangle(i + 1, 2 * n + i + 1, 2 * n + i, p);  // on the shifted copy
+  }
+  m.add_triangle(0, n - 1, 2 * n - 1, p);  // uses the last point of row 1
+  m.add_point(K::Point_3(5, 5, 5));  // unused
+  Model exact = m;
+  const std::size_t removed_exact = CGAL::Bubble_mesh_3::merge_coincident_points(exact);
+  assert(removed_exact == 1 && exact.number_of_points() == std::size_t(3 * n));
+  CGAL::Real_timer timer;
+  timer.start();
+  const std::size_t removed = CGAL::Bubble_mesh_3::merge_coincident_points(m, 1e-10);
+  timer.stop();
+  std::cout << "  " << 3 * n + 1 << " points: exact merge removes " << removed_exact << ", tolerance 1e-10 of the diagonal removes "
+            << removed << " in " << timer.time() << " s\n";
+  assert(removed == std::size_t(n) + 1 && m.number_of_points() == std::size_t(2 * n));
+  // the kept points are the first ones, with their own coordinates
+  for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+    for(std::size_t v : m.triangle(t)) assert(m.point(v).y() == 0 || m.point(v).x() == std::floor(m.point(v).x()));
+  // a tolerance as large as the model merges everything, at once
+  Model all = exact;
+  CGAL::Bubble_mesh_3::merge_coincident_points(all, 2.);
+  assert(all.number_of_points() == 1);
+  expect_error("negative tolerance", [&] { CGAL::Bubble_mesh_3::merge_coincident_points(all, -1.); }, {"tolerance", "-1"});
+}
+
 static void test_small_files()
 {
   std::cout << "hand-written files in " << test_data << "\n";
@@ -454,6 +492,7 @@ static void test_real_models()
 int main()
 {
   test_obj_two_boxes();
+  test_merge_coincident_points();
   test_small_files();
   test_real_models();
   std::cout << "test_io: all checks passed\n";

@@ -48,14 +48,21 @@ std::vector<std::size_t> coincident_point_representatives(const std::vector<Poin
   const std::size_t n = points.size();
   std::vector<std::size_t> rep(n);
   std::iota(rep.begin(), rep.end(), std::size_t(0));
-  if(n < 2) return rep;
   if(!(relative_tolerance >= 0.) || !std::isfinite(relative_tolerance))
     throw Geological_model_error("merge tolerance must be a finite number >= 0, got " +
                                  std::to_string(relative_tolerance));
+  if(n < 2) return rep;
 
   std::vector<std::array<double, 3>> p(n);
   for(std::size_t i = 0; i < n; ++i)
+  {
     p[i] = {{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}};
+    // (sorting needs a strict weak order, which NaN breaks)
+    if(!std::isfinite(p[i][0]) || !std::isfinite(p[i][1]) || !std::isfinite(p[i][2]))
+      throw Geological_model_error("point " + std::to_string(i) + " has a non-finite coordinate (" +
+                                   std::to_string(p[i][0]) + ", " + std::to_string(p[i][1]) + ", " +
+                                   std::to_string(p[i][2]) + ")");
+  }
 
   if(relative_tolerance == 0.)
   {
@@ -75,16 +82,23 @@ std::vector<std::size_t> coincident_point_representatives(const std::vector<Poin
     for(int d = 0; d < 3; ++d) { lo[d] = (std::min)(lo[d], q[d]); hi[d] = (std::max)(hi[d], q[d]); }
   double diag2 = 0;
   for(int d = 0; d < 3; ++d) diag2 += (hi[d] - lo[d]) * (hi[d] - lo[d]);
-  const double tol = relative_tolerance * std::sqrt(diag2);
-  if(!(tol > 0.) || !std::isfinite(tol))
+  const double diag = std::sqrt(diag2);
+  const double tol = relative_tolerance * diag;
+  // below ~1e-14 of the diagonal, doubles cannot tell "close" from "equal"
+  if(relative_tolerance < 1e-14 || !(tol > 0.) || !std::isfinite(tol))
     return coincident_point_representatives(points, 0.);
+  if(tol >= diag)
+  {
+    std::fill(rep.begin(), rep.end(), std::size_t(0));  // everything is within reach
+    return rep;
+  }
   const double tol2 = tol * tol;
 
-  // cells of side tol: close points lie in the same or adjacent cells
+  // cells of side tol/2 (diagonal < tol): points sharing a cell always merge,
+  // points within tol lie at most two cells apart
+  const double cell_size = 0.5 * tol;
   auto cell_coord = [&](double x, int d) -> std::int64_t {
-    const double c = std::floor((x - lo[d]) / tol);
-    // tolerances below ~1e-15 of the diagonal would overflow: clamp (merging stays correct)
-    return static_cast<std::int64_t>((std::min)(c, 1e15));
+    return static_cast<std::int64_t>(std::floor((x - lo[d]) / cell_size));  // < 2e14: no overflow
   };
   struct Key_hash
   {
@@ -105,21 +119,26 @@ std::vector<std::size_t> coincident_point_representatives(const std::vector<Poin
   }
   std::vector<std::size_t> parent(n);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto unite = [&](std::size_t i, std::size_t j) {
+    const std::size_t a = find_representative(parent, i), b = find_representative(parent, j);
+    if(a < b) parent[b] = a; else if(b < a) parent[a] = b;
+  };
+  for(const auto& c : grid)
+    for(std::size_t k = 1; k < c.second.size(); ++k) unite(c.second[0], c.second[k]);
   for(std::size_t i = 0; i < n; ++i)
-    for(std::int64_t dx = -1; dx <= 1; ++dx)
-      for(std::int64_t dy = -1; dy <= 1; ++dy)
-        for(std::int64_t dz = -1; dz <= 1; ++dz)
+    for(std::int64_t dx = -2; dx <= 2; ++dx)
+      for(std::int64_t dy = -2; dy <= 2; ++dy)
+        for(std::int64_t dz = -2; dz <= 2; ++dz)
         {
+          if(dx == 0 && dy == 0 && dz == 0) continue;
           auto it = grid.find({{cell[i][0] + dx, cell[i][1] + dy, cell[i][2] + dz}});
           if(it == grid.end()) continue;
           for(std::size_t j : it->second)
           {
-            if(j <= i) continue;
+            if(j <= i || find_representative(parent, i) == find_representative(parent, j)) continue;
             double d2 = 0;
             for(int d = 0; d < 3; ++d) d2 += (p[i][d] - p[j][d]) * (p[i][d] - p[j][d]);
-            if(d2 > tol2) continue;
-            const std::size_t a = find_representative(parent, i), b = find_representative(parent, j);
-            if(a < b) parent[b] = a; else if(b < a) parent[a] = b;
+            if(d2 <= tol2) unite(i, j);
           }
         }
   for(std::size_t i = 0; i < n; ++i) rep[i] = find_representative(parent, i);
@@ -138,13 +157,15 @@ With `relative_tolerance == 0` (the default) only points with identical
 coordinates are merged. With a positive value, points closer than
 `relative_tolerance` times the diagonal of the model's bounding box are merged
 (transitively) into the one with the smallest index, whose coordinates are
-kept. The cost is O(n log n), not quadratic.
+kept; values below 1e-14 are taken as 0. The cost is O(n log n) (sorting, or
+a hash grid of cells of half the tolerance), not quadratic.
 
 Triangles that lose a vertex by the merge (two corners becoming one point) are
 not removed: `validate_geological_model()` reports them.
 
 \returns the number of points removed.
-\throws Geological_model_error if the tolerance is negative or not finite.
+\throws Geological_model_error if the tolerance is negative or not finite, or a
+point has a non-finite coordinate.
 */
 template <class GeomTraits>
 std::size_t merge_coincident_points(Geological_model_3<GeomTraits>& model, double relative_tolerance = 0.)

@@ -213,30 +213,31 @@ void bodies_to_model(const Body_soup<Point_3>& soup, Geological_model_3<GeomTrai
         continue;
       }
       Occurrence& o = occurrences[ins.first->second];
-      const std::string here = triangle_text(b, t);
-      const std::string there = triangle_text(o.body, o.triangle);
-      const std::string corners = " (corners " + coordinates(key[0]) + " " + coordinates(key[1]) + " " +
-                                  coordinates(key[2]) + ")";
-      if(o.body == b)
-        throw Geological_model_error(here + " is a duplicate of " + there + corners);
+      // messages are built only on failure: this loop sees every contact triangle
+      auto fail = [&](const std::string& relation, const std::string& why) {
+        throw Geological_model_error(triangle_text(b, t) + relation + triangle_text(o.body, o.triangle) +
+                                     " (corners " + coordinates(key[0]) + " " + coordinates(key[1]) + " " +
+                                     coordinates(key[2]) + ")" + why);
+      };
+      if(o.body == b) fail(" is a duplicate of ", "");
       if(!soup.bodies[b].inside.empty() || !soup.bodies[o.body].inside.empty())
-        throw Geological_model_error(here + " coincides with " + there + corners +
-                                     ": a surface inside a body cannot also bound a body");
+        fail(" coincides with ", ": a surface inside a body cannot also bound a body");
       if(o.other_body != std::size_t(-1))
-        throw Geological_model_error(here + " coincides with " + there + " and with " +
-                                     triangle_text(o.other_body, o.other_triangle) + corners +
-                                     ": a triangle can separate two bodies only");
+        fail(" coincides with ", " and with " + triangle_text(o.other_body, o.other_triangle) +
+                                   ": a triangle can separate two bodies only");
       if(same_orientation(tris[b][t], tris[o.body][o.triangle]))
-        throw Geological_model_error(here + " has the same orientation as " + there + corners +
-                                     ": both bodies see it as outward, so one of them is oriented "
-                                     "inconsistently there");
+        fail(" has the same orientation as ",
+             ": both bodies see it as outward, so one of them is oriented inconsistently there");
       o.other_body = b;
       o.other_triangle = t;
     }
 
   // ---- patches and triangles
   auto region_name = [&](std::size_t r) { return r == 0 ? std::string("outside") : model.region(r).name; };
-  std::map<std::tuple<std::size_t, std::size_t, std::string>, std::size_t> patch_of_key;
+  // (positive, negative, name): the name as an index into soup.patch_names, or past
+  // them for the default name of an inside surface (its body) or of a region pair
+  std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::size_t> patch_of_key;
+  const std::size_t default_name = soup.patch_names.size() + soup.bodies.size();
   for(std::size_t i = 0; i < np; ++i)
     model.add_point(typename Model::Point_3(CGAL::to_double(soup.points[i].x()), CGAL::to_double(soup.points[i].y()),
                                             CGAL::to_double(soup.points[i].z())),
@@ -254,13 +255,18 @@ void bodies_to_model(const Body_soup<Point_3>& soup, Geological_model_3<GeomTrai
     if(name_index == Soup::no_name && o.other_body != std::size_t(-1) &&
        o.other_triangle < soup.bodies[o.other_body].triangle_patch_names.size())
       name_index = soup.bodies[o.other_body].triangle_patch_names[o.other_triangle];
-    std::string name;
-    if(name_index != Soup::no_name && name_index < soup.patch_names.size()) name = soup.patch_names[name_index];
-    else if(!body.inside.empty()) name = body.name;
-    else name = region_name(neg) + "/" + region_name(pos);
-
-    auto ins = patch_of_key.emplace(std::make_tuple(pos, neg, name), 0);
-    if(ins.second) ins.first->second = model.add_patch(name, pos, neg);
+    std::size_t name_key = default_name;
+    if(name_index != Soup::no_name && name_index < soup.patch_names.size()) name_key = name_index;
+    else if(!body.inside.empty()) name_key = soup.patch_names.size() + o.body;
+    auto ins = patch_of_key.emplace(std::make_tuple(pos, neg, name_key), 0);
+    if(ins.second)
+    {
+      std::string name;
+      if(name_key < soup.patch_names.size()) name = soup.patch_names[name_key];
+      else if(name_key < default_name) name = body.name;
+      else name = region_name(neg) + "/" + region_name(pos);
+      ins.first->second = model.add_patch(name, pos, neg);
+    }
     const Tri& tri = tris[o.body][o.triangle];
     const std::size_t line = o.triangle < body.triangle_lines.size() ? body.triangle_lines[o.triangle] : 0;
     model.add_triangle(tri[0], tri[1], tri[2], ins.first->second, typename Model::Source{file, line});
