@@ -235,7 +235,7 @@ inline void write_quality_report_text(std::ostream& os, const Mesh_quality_repor
   const char* header[] = {"region", "tets", "verts", "volume", "dih min", "dih max", "dih mean",
                           "mindih mean", "<5%", "<10%", "<15%", "<20%", "AR med", "AR max",
                           "AR>10%", "AR>40%"};
-  const int width[] = {14, 9, 8, 11, 8, 8, 8, 11, 6, 6, 6, 6, 7, 9, 7, 7};
+  const int width[] = {14, 9, 8, 11, 9, 9, 9, 12, 7, 7, 7, 7, 9, 10, 8, 8};
   auto row = [&](const std::vector<std::string>& cells) {
     for(std::size_t i = 0; i < cells.size(); ++i)
     {
@@ -259,7 +259,7 @@ inline void write_quality_report_text(std::ostream& os, const Mesh_quality_repor
          cell(q->mean_smallest_dihedral_angle, 2), percent(q->share_smallest_dihedral_under[0]),
          percent(q->share_smallest_dihedral_under[1]), percent(q->share_smallest_dihedral_under[2]),
          percent(q->share_smallest_dihedral_under[3]), cell(q->median_aspect_ratio, 3),
-         cell(q->max_aspect_ratio, 1), percent(q->share_aspect_ratio_above_10),
+         cell(q->max_aspect_ratio, 2), percent(q->share_aspect_ratio_above_10),
          percent(q->share_aspect_ratio_above_40)});
   }
   if(report.all.number_of_degenerate_tetrahedra > 0)
@@ -270,8 +270,8 @@ inline void write_quality_report_text(std::ostream& os, const Mesh_quality_repor
 
   if(!report.worst_tetrahedra.empty())
   {
-    os << "\n  worst tetrahedra (surface angle: smallest " << report.surface_angle_source
-       << " angle among the surface triangles sharing an edge with the tet)\n"
+    os << "\n  worst tetrahedra; bfaces = faces on a surface, surfang = smallest angle of the surface\n"
+       << "  triangles sharing an edge with the tet (angles of the " << report.surface_angle_source << ")\n"
        << "  " << std::right << std::setw(9) << "tet" << std::setw(8) << "region" << std::setw(9)
        << "mindih" << std::setw(9) << "maxdih" << std::setw(10) << "AR" << std::setw(8) << "bfaces"
        << std::setw(9) << "surfang" << "  centroid\n";
