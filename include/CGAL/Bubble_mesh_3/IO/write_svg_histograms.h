@@ -144,9 +144,11 @@ inline void write_svg_panel(std::ostream& os, const Svg_panel_axis& ax, std::siz
      << svg_number(X(ax.ideal)) << "\" y2=\"" << svg_number(y1) << "\" stroke=\"#888888\" stroke-dasharray=\"3,3\"/>\n"
      << "<text x=\"" << svg_number(X(ax.ideal) + 3) << "\" y=\"" << svg_number(y1 + 10)
      << "\" font-size=\"10\" fill=\"#666666\">" << ax.ideal_label << "</text>\n";
-  // the curves: steps over the bins; the overflow bin is drawn over [10, x_max]
-  for(const Svg_curve& c : curves)
+  // the curves: steps over the bins; the overflow bin is drawn over [10, x_max].
+  // Last listed is drawn first: the thick whole-model curve goes under the regions
+  for(auto it = curves.rbegin(); it != curves.rend(); ++it)
   {
+    const Svg_curve& c = *it;
     const Quality_histogram* h = c.histograms[which];
     if(!h || h->total == 0) continue;
     os << "<path fill=\"none\" stroke=\"" << c.color << "\" stroke-width=\"" << svg_number(c.width) << "\"";
@@ -235,8 +237,8 @@ inline void write_svg_histograms(std::ostream& os, const Mesh_quality_report& re
   }
   internal::Svg_curve all;
   all.label = "whole model (" + std::to_string(report.all.number_of_tetrahedra) + " tets)";
-  all.color = "#000000";
-  all.width = 2.8;
+  all.color = "#222222";
+  all.width = 3.5;
   internal::set_histograms(all, report.all);
   curves.push_back(all);
   internal::write_svg_figure(os, "Mesh quality: " + report.name,
