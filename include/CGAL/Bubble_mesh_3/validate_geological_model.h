@@ -448,34 +448,55 @@ private:
 
     // closed and edge-manifold: the triangles around a vertex form cycles; more than one is a pinch
     {
-      typedef std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> Corner; // region, vertex, fan, side
-      std::vector<Corner> corners;
-      corners.reserve(3 * sides_.size());
-      for(std::size_t s = 0; s < sides_.size(); ++s)
-        for(std::size_t k = 0; k < 3; ++k)
-          corners.emplace_back(sides_[s].region, sides_[s].v[k], uf_find(corner_parent, 3 * s + k), s);
-      std::sort(corners.begin(), corners.end());
+      // one pass per region (sides are sorted by region): a corner whose fan differs from the
+      // first fan seen at its vertex marks a pinch
+      const std::size_t none = std::size_t(-1);
+      std::vector<std::size_t> seen_in(m_.number_of_points(), none), first_fan(m_.number_of_points());
+      std::vector<std::size_t> pinched_in(m_.number_of_points(), none);
       Problem_class pinched(limit_);
-      for(std::size_t i = 0; i < corners.size();)
+      for(std::size_t s0 = 0; s0 < sides_.size();)
       {
-        std::size_t j = i + 1;
-        std::size_t fans = 1;
-        std::string examples = triangle_label(sides_[std::get<3>(corners[i])].triangle);
-        while(j < corners.size() && std::get<0>(corners[j]) == std::get<0>(corners[i]) &&
-              std::get<1>(corners[j]) == std::get<1>(corners[i]))
-        {
-          if(std::get<2>(corners[j]) != std::get<2>(corners[j - 1]))
+        const std::size_t r = sides_[s0].region;
+        std::size_t s1 = s0;
+        std::vector<std::size_t> pinched_vertices;
+        for(; s1 < sides_.size() && sides_[s1].region == r; ++s1)
+          for(std::size_t k = 0; k < 3; ++k)
           {
-            ++fans;
-            examples += " and " + triangle_label(sides_[std::get<3>(corners[j])].triangle);
+            const std::size_t v = sides_[s1].v[k];
+            const std::size_t fan = uf_find(corner_parent, 3 * s1 + k);
+            if(seen_in[v] != r)
+            {
+              seen_in[v] = r;
+              first_fan[v] = fan;
+            }
+            else if(fan != first_fan[v] && pinched_in[v] != r)
+            {
+              pinched_in[v] = r;
+              pinched_vertices.push_back(v);
+            }
           }
-          ++j;
+        for(std::size_t v : pinched_vertices)
+        {
+          if(pinched.count() >= limit_)
+          {
+            pinched.add(std::string()); // counted, not shown
+            continue;
+          }
+          // rare: list the fans at v with one triangle each
+          std::vector<std::pair<std::size_t, std::size_t> > fans; // fan, side
+          for(std::size_t s = s0; s < s1; ++s)
+            for(std::size_t k = 0; k < 3; ++k)
+              if(sides_[s].v[k] == v) fans.emplace_back(uf_find(corner_parent, 3 * s + k), s);
+          std::sort(fans.begin(), fans.end());
+          std::string examples;
+          std::size_t count = 0;
+          for(std::size_t i = 0; i < fans.size(); ++i)
+            if(i == 0 || fans[i].first != fans[i - 1].first)
+              examples += (count++ == 0 ? "" : " and ") + triangle_label(sides_[fans[i].second].triangle);
+          pinched.add(at(sides_[fans.front().second].triangle) + m_.region_label(r) + ": " + vertex_label(v) +
+                      " joins " + std::to_string(count) + " separate fans of boundary triangles (" + examples + ")");
         }
-        if(fans > 1)
-          pinched.add(at(sides_[std::get<3>(corners[i])].triangle) + m_.region_label(std::get<0>(corners[i])) +
-                      ": " + vertex_label(std::get<1>(corners[i])) + " joins " + std::to_string(fans) +
-                      " separate fans of boundary triangles (" + examples + ")");
-        i = j;
+        s0 = s1;
       }
       if(!pinched.empty())
       {
@@ -748,6 +769,12 @@ private:
       // makes a segment [v,x] common: its far end lies on the opposite edge of one of them.
       const std::size_t a1 = a[(ia[0] + 1) % 3], a2 = a[(ia[0] + 2) % 3];
       const std::size_t b1 = b[(ib[0] + 1) % 3], b2 = b[(ib[0] + 2) % 3];
+      // quick exit, the common case: one triangle lies strictly on one side of the other's plane
+      const auto orientation = gt.orientation_3_object();
+      const Orientation o1 = orientation(P(a[0]), P(a[1]), P(a[2]), P(b1));
+      if(o1 != COPLANAR && o1 == orientation(P(a[0]), P(a[1]), P(a[2]), P(b2))) return false;
+      const Orientation o2 = orientation(P(b[0]), P(b[1]), P(b[2]), P(a1));
+      if(o2 != COPLANAR && o2 == orientation(P(b[0]), P(b[1]), P(b[2]), P(a2))) return false;
       const auto do_intersect = gt.do_intersect_3_object();
       return do_intersect(Segment_3(P(a1), P(a2)), Triangle_3(P(b[0]), P(b[1]), P(b[2]))) ||
              do_intersect(Segment_3(P(b1), P(b2)), Triangle_3(P(a[0]), P(a[1]), P(a[2])));
@@ -813,7 +840,8 @@ private:
       if(do_improperly_intersect(x.info(), y.info()))
         bad.emplace_back((std::min)(x.info(), y.info()), (std::max)(x.info(), y.info()));
     };
-    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), callback);
+    // the cutoff under which the segment tree scans directly: PMP's self-intersection test uses 2000 too
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), callback, std::ptrdiff_t(2000));
     if(bad.empty()) return;
     std::sort(bad.begin(), bad.end());
     Problem_class crossing(limit_);
