@@ -42,11 +42,13 @@ for fmt in ml ts obj; do
     printf 'g A\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nf 1 4 3 2\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\ng B\nv 0 0 -1\nf 1 2 3 4\nf 6 2 1\nf 6 3 2\nf 6 4 3\nf 6 1 4\n' > "$corpus/seed_pyramids.obj"
   fi
 
+  dict="$here/bench/fuzz/gocad.dict"
+  [ "$fmt" = obj ] && dict="$here/bench/fuzz/obj.dict"
   log="$work/fuzz_read_$fmt.log"
   echo "== fuzzing $fmt for $seconds s (log: $log)"
   set +e
   "$exe" "$corpus" -max_total_time="$seconds" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
-    -print_final_stats=1 -artifact_prefix="$artifacts" > "$log" 2>&1
+    -print_final_stats=1 -dict="$dict" -artifact_prefix="$artifacts" > "$log" 2>&1
   status=$?
   set -e
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)

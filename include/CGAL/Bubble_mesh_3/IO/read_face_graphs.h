@@ -34,7 +34,7 @@ Builds a geological model from the closed surfaces of its bodies, one
 The bodies become regions 1, 2, ... in the order given, named after `names`
 (`body_1`, `body_2`, ... when `names` is empty). The logic is that of
 `IO::read_multibody_obj()`: a triangle found in two bodies is their interface,
-one found in a single body separates it from the outside, a body enclosing a
+one found in a single body separates it from the outside, a closed body enclosing a
 negative volume is flipped as a whole, coincident points are merged, and
 faces with more than three vertices are split into fans.
 

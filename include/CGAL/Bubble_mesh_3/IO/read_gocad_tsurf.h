@@ -77,8 +77,9 @@ only; this reader reads them all.
 By default each object is the closed surface of one body (a region named
 after the object), exactly as the groups of `read_multibody_obj()`: a
 triangle found in two objects is their interface, one found in a single
-object separates its body from the outside, and an object whose surface
-encloses a negative volume is flipped as a whole.
+object separates its body from the outside, and an object whose closed
+surface encloses a negative volume is flipped as a whole. An open object
+(a fault) needs a region assignment: as a body it fails validation.
 
 With a region assignment (named parameter `region_assignment` or
 `region_assignment_file`, see `read_region_assignment()`), each object

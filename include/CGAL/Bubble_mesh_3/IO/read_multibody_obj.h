@@ -56,7 +56,8 @@ Directives, in comments other OBJ tools ignore:
   side (`outside` for region 0).
 
 Orientation: a body whose closed surface encloses a negative volume is
-flipped as a whole; triangles oriented against their neighbours are kept as
+flipped as a whole (an open surface is not: it has no inside, and validation
+reports it); triangles oriented against their neighbours are kept as
 they are, for `validate_geological_model()` to report. A contact triangle
 listed with the same orientation in both its bodies is an error.
 

@@ -12,6 +12,7 @@
 #include <CGAL/Bubble_mesh_3/IO/internal/Line_reader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstddef>
 #include <map>
@@ -57,8 +58,8 @@ struct Body_soup
 
 /*
  Regions: one per body that has triangles and is not an inside surface, in
- the order of the bodies. A body whose surface encloses a negative volume is
- flipped as a whole (exporters disagree on orientation); triangles oriented
+ the order of the bodies. A body whose closed surface encloses a negative
+ volume is flipped as a whole (open or flat bodies are left as they are) (exporters disagree on orientation); triangles oriented
  against their neighbours inside a body are kept as they are, for validation
  to report. A triangle found in one body separates it from the outside; found
  in two bodies (same three points after merging, opposite orientations) it
@@ -149,23 +150,40 @@ void bodies_to_model(const Body_soup<Point_3>& soup, Geological_model_3<GeomTrai
     }
   }
 
-  // ---- orientation of each body as a whole
-  double c[3] = {0, 0, 0};
-  if(np > 0)
-  {
-    double lo[3], hi[3];
-    for(int d = 0; d < 3; ++d) lo[d] = hi[d] = CGAL::to_double(soup.points[0][d]);
-    for(const Point_3& p : soup.points)
-      for(int d = 0; d < 3; ++d)
-      {
-        lo[d] = (std::min)(lo[d], CGAL::to_double(p[d]));
-        hi[d] = (std::max)(hi[d], CGAL::to_double(p[d]));
-      }
-    for(int d = 0; d < 3; ++d) c[d] = 0.5 * (lo[d] + hi[d]);
-  }
+  // ---- orientation of each body as a whole: only a closed surface (every
+  // edge used an even number of times) has an inside; its volume is taken
+  // about its own centre and must stand clear of rounding (flat bodies are
+  // left alone), so that reading what the writer wrote makes the same choice
   for(std::size_t b = 0; b < soup.bodies.size(); ++b)
   {
-    if(!soup.bodies[b].inside.empty()) continue;
+    if(!soup.bodies[b].inside.empty() || tris[b].empty()) continue;
+    std::vector<std::pair<std::size_t, std::size_t> > edges;
+    edges.reserve(3 * tris[b].size());
+    for(const Tri& tri : tris[b])
+      for(int i = 0; i < 3; ++i)
+        edges.push_back(std::minmax(tri[i], tri[(i + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    bool closed = true;
+    for(std::size_t i = 0; i < edges.size() && closed;)
+    {
+      std::size_t j = i;
+      while(j < edges.size() && edges[j] == edges[i]) ++j;
+      closed = ((j - i) % 2 == 0);
+      i = j;
+    }
+    if(!closed) continue;
+
+    double lo[3], hi[3], c[3];
+    for(int d = 0; d < 3; ++d) lo[d] = hi[d] = CGAL::to_double(soup.points[tris[b][0][0]][d]);
+    for(const Tri& tri : tris[b])
+      for(std::size_t v : tri)
+        for(int d = 0; d < 3; ++d)
+        {
+          lo[d] = (std::min)(lo[d], CGAL::to_double(soup.points[v][d]));
+          hi[d] = (std::max)(hi[d], CGAL::to_double(soup.points[v][d]));
+        }
+    double diag2 = 0;
+    for(int d = 0; d < 3; ++d) { c[d] = 0.5 * (lo[d] + hi[d]); diag2 += (hi[d] - lo[d]) * (hi[d] - lo[d]); }
     double vol = 0;
     for(const Tri& tri : tris[b])
     {
@@ -175,7 +193,7 @@ void bodies_to_model(const Body_soup<Point_3>& soup, Geological_model_3<GeomTrai
       vol += q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
              q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
     }
-    if(vol < 0)
+    if(vol < -1e-10 * diag2 * std::sqrt(diag2))
       for(Tri& tri : tris[b]) std::swap(tri[1], tri[2]);
   }
 
