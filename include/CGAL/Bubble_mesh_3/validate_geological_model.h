@@ -11,7 +11,6 @@
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 
 #include <CGAL/Bbox_3.h>
-#include <CGAL/Cartesian_converter.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -801,8 +800,11 @@ private:
 
   std::string contact_point(std::size_t s, std::size_t t) const
   {
+    // exact constructions on the (double) coordinates: a touching contact is found too
     typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
-    CGAL::Cartesian_converter<GeomTraits, EK> to_exact;
+    auto to_exact = [](const Point_3& p) {
+      return EK::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    };
     auto tri = [&](std::size_t i) {
       const auto& v = m_.triangle(i);
       return EK::Triangle_3(to_exact(m_.point(v[0])), to_exact(m_.point(v[1])), to_exact(m_.point(v[2])));
