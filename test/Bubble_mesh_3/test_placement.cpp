@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/K_means_clustering.h>
 #include <CGAL/Bubble_mesh_3/Surface_bubble_sizing_field.h>
 #include <CGAL/Bubble_mesh_3/cluster_validity.h>
+#include <CGAL/Bubble_mesh_3/make_layered_model.h>
 #include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
 #include <CGAL/Bubble_mesh_3/place_surface_bubbles.h>
 
@@ -459,6 +460,52 @@ struct Region_locator
   }
 };
 
+// Places the bubbles of `m` with the defaults and checks, independently of
+// the placement's own tests, that every bubble is inside its region and at
+// least its radius away from every triangle. Returns the bubble count.
+static std::size_t check_model_placement(const std::string& name, const Model& m)
+{
+  CGAL::Real_timer t;
+  t.start();
+  const std::vector<Bubble> sb = BM::place_surface_bubbles(m);
+  const double t_surface = t.time();
+  std::vector<BM::Region_placement_statistics> stats;
+  const std::vector<Bubble> ib = BM::place_initial_bubbles(m, sb, BMP::placement_statistics(&stats));
+  const double t_total = t.time();
+  std::cout << name << ": " << m.number_of_regions() << " regions, " << m.number_of_triangles() << " triangles, "
+            << sb.size() << " surface bubbles (" << t_surface << " s), " << ib.size() << " initial bubbles ("
+            << t_total - t_surface << " s)\n";
+  for(std::size_t r = 1; r < stats.size(); ++r)
+    std::cout << "  region " << r << ": " << stats[r].number_of_surface_points << " points, k = "
+              << stats[r].number_of_clusters << " (CH " << stats[r].calinski_harabasz_choice << ", S "
+              << stats[r].silhouette_choice << ", elbow " << stats[r].elbow_choice << "), h = " << stats[r].cell_edge
+              << ", " << stats[r].number_of_bubbles << " bubbles (" << stats[r].clustering_seconds << " + "
+              << stats[r].placement_seconds << " s)\n";
+  for(const Bubble& b : sb) assert(b.is_fixed && b.radius > 0 && b.surface_point < m.number_of_points());
+  const Region_locator locate(m);
+  std::size_t regions_with_bubbles = 0;
+  for(std::size_t r = 1; r < stats.size(); ++r)
+    if(stats[r].number_of_bubbles > 0) ++regions_with_bubbles;
+  for(const Bubble& b : ib)
+  {
+    assert(b.region >= 1 && b.region <= m.number_of_regions() && !b.is_fixed && b.radius > 0);
+    assert(locate.is_inside(b.center, b.region));
+  }
+  const double ratio = min_clearance_ratio(m, ib, false);
+  std::cout << "  all inside their region (ray parity); smallest distance to a surface / radius " << ratio
+            << "; regions with bubbles " << regions_with_bubbles << "/" << m.number_of_regions() << "\n";
+  assert(ratio >= 1. - 1e-9);
+  return ib.size();
+}
+
+static void test_default_model()
+{
+  Model m;
+  BM::make_layered_model(m);
+  const std::size_t n = check_model_placement("default layered model", m);
+  assert(n > 0);
+}
+
 static void test_real_models()
 {
   const std::string dir = BUBBLE_MESH_3_SHARED_DATA_DIR;
@@ -476,35 +523,7 @@ static void test_real_models()
   {
     Model m;
     BM::IO::read_gocad_model3d(f, m);
-    CGAL::Real_timer t;
-    t.start();
-    const std::vector<Bubble> sb = BM::place_surface_bubbles(m);
-    const double t_surface = t.time();
-    std::vector<BM::Region_placement_statistics> stats;
-    const std::vector<Bubble> ib = BM::place_initial_bubbles(m, sb, BMP::placement_statistics(&stats));
-    const double t_total = t.time();
-    std::cout << std::filesystem::path(f).filename().string() << ": " << m.number_of_regions() << " regions, "
-              << m.number_of_triangles() << " triangles, " << sb.size() << " surface bubbles (" << t_surface
-              << " s), " << ib.size() << " initial bubbles (" << t_total - t_surface << " s)\n";
-    for(std::size_t r = 1; r < stats.size(); ++r)
-      std::cout << "  region " << r << ": " << stats[r].number_of_surface_points << " points, k = "
-                << stats[r].number_of_clusters << " (CH " << stats[r].calinski_harabasz_choice << ", S "
-                << stats[r].silhouette_choice << ", elbow " << stats[r].elbow_choice << "), h = "
-                << stats[r].cell_edge << ", " << stats[r].number_of_bubbles << " bubbles ("
-                << stats[r].clustering_seconds << " + " << stats[r].placement_seconds << " s)\n";
-    const Region_locator locate(m);
-    std::size_t per_region_nonzero = 0;
-    for(std::size_t r = 1; r < stats.size(); ++r)
-      if(stats[r].number_of_bubbles > 0) ++per_region_nonzero;
-    for(const Bubble& b : ib)
-    {
-      assert(b.region >= 1 && b.region <= m.number_of_regions() && !b.is_fixed);
-      assert(locate.is_inside(b.center, b.region));
-    }
-    const double ratio = min_clearance_ratio(m, ib, false);
-    std::cout << "  all inside their region (ray parity); smallest distance to a surface / radius " << ratio
-              << "; regions with bubbles " << per_region_nonzero << "/" << m.number_of_regions() << "\n";
-    assert(ratio >= 1. - 1e-9);
+    check_model_placement(std::filesystem::path(f).filename().string(), m);
   }
 }
 
@@ -517,6 +536,7 @@ int main()
   test_silhouette_subsample();
   test_radius_rule();
   test_initial_bubbles_on_box();
+  test_default_model();
   test_real_models();
   std::cout << "test_placement: OK\n";
   return EXIT_SUCCESS;
