@@ -444,6 +444,30 @@ static void test_small_files()
     BIO::read_gocad_model3d(is, "key.ml", m);
   }, {"key.ml:15:", "TFACE 2", "(0 0.5 2)", "'boundary'"});
   assert(m.number_of_triangles() == 0);  // nothing half-built
+
+  // REGION lists: how a TFACE is placed
+  auto read_edited = [&](const std::string& from, const std::string& to, Model& out) {
+    std::ifstream f(test_data + "two_boxes.ml");
+    std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    assert(text.find(from) != std::string::npos);
+    text.replace(text.find(from), from.size(), to);
+    std::istringstream is(text);
+    BIO::read_gocad_model3d(is, "edited.ml", out);
+  };
+  expect_error("TFACE with the same sign twice", [&] { read_edited("  -2  +3\n", "  -2  -3\n", m); },
+               {"edited.ml:19:", "TFACE 3", "'horizon'", "REGION 'lower' as -3", "REGION 'upper' as -3"});
+  expect_error("TFACE in no REGION", [&] { read_edited("  -1  -3  0\nREGION 6  upper \n  -2  +3\n", "  -1  0\nREGION 6  upper \n  -2\n", m); },
+               {"edited.ml:19:", "TFACE 3", "in no REGION"});
+  {
+    // with both signs in one region (CloudSpin's faults), or in one region only
+    // beside a Universe, a TFACE is a surface inside that region
+    Model both, once;
+    read_edited("  -1  -3  0\nREGION 6  upper \n  -2  +3\n", "  -1  -3  +3  0\nREGION 6  upper \n  -2\n", both);
+    read_edited("  -2  +3\n", "  -2\n", once);
+    for(const Model* x : {&both, &once})
+      assert(x->patch(2).name == "horizon" && x->patch(2).is_inside_region() && x->patch(2).positive_region == 1);
+    std::cout << "  TFACE listed +3 and -3 in 'lower', or only in 'lower': a surface inside 'lower'\n";
+  }
 }
 
 static const char* real_models[] = {"modelA1.ml", "modelA2.ml", "modelA5.ml", "CloudSpin_fixed.ml"};
