@@ -69,8 +69,9 @@ parts, with VRTX/PVRTX and ATOM/PATOM vertices and TRGL triangles.
   coordinates, else within 1e-7 of the surface's bounding-box diagonal),
   trying the part of the same rank first; a key triangle found in no part is
   an error.
-- The region named `Universe` is the outside (region 0); the other regions
-  keep their names and their order.
+- The (first) region named `Universe`, in any case, is the outside (region
+  0); the other regions keep their names and their order. TSurf objects or
+  sections that no header TFACE names are ignored.
 - A TFACE listed in two regions separates them. With `ZPOSITIVE Elevation`
   (the default) the region listing it as `+id` lies on the side the key
   triangle's normal (right-hand rule) points to; with `ZPOSITIVE Depth` on
