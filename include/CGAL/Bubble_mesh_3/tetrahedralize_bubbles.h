@@ -1,0 +1,385 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_TETRAHEDRALIZE_BUBBLES_H
+#define CGAL_BUBBLE_MESH_3_TETRAHEDRALIZE_BUBBLES_H
+
+#include <CGAL/Bubble_mesh_3/Bubble.h>
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/Mesh_complex_3.h>
+#include <CGAL/Bubble_mesh_3/geological_model_measures.h>
+#include <CGAL/Bubble_mesh_3/internal/label_regions.h>
+#include <CGAL/Bubble_mesh_3/internal/recover_surface.h>
+#include <CGAL/Bubble_mesh_3/internal/tetrahedralization_parameters.h>
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iostream>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+What `tetrahedralize_bubbles()` did: sizes, Steiner points, how many input
+triangles are single mesh facets, and the time of each step (seconds).
+*/
+struct Tetrahedralization_report
+{
+  std::size_t number_of_vertices = 0;                    ///< vertices of the output triangulation
+  std::size_t number_of_cells = 0;                       ///< cells in the complex (inside the model)
+  std::size_t number_of_facets = 0;                      ///< facets in the complex (on input triangles)
+  std::size_t number_of_interior_points_inserted = 0;    ///< interior points that are mesh vertices
+  std::size_t number_of_interior_points_duplicate = 0;   ///< dropped: on a model point or on an earlier interior point
+  std::size_t number_of_interior_points_encroaching = 0; ///< dropped: in the ball of an input edge or triangle
+  std::size_t number_of_interior_points_outside = 0;     ///< dropped: outside every region
+  std::size_t number_of_steiner_points_on_edges = 0;
+  std::size_t number_of_steiner_points_on_triangles = 0;
+  std::size_t number_of_triangles_kept_whole = 0;        ///< input triangles that are a single mesh facet
+  std::size_t number_of_triangles_split = 0;             ///< input triangles made of several mesh facets
+  double time_filtering = 0.;                            ///< dropping encroaching interior points
+  double time_insertion = 0.;                            ///< Delaunay insertion of all points
+  double time_recovery = 0.;                             ///< Steiner points until every input triangle is present
+  double time_labelling = 0.;                            ///< regions, patches, vertex dimensions, clean-up
+
+  std::size_t number_of_interior_points_dropped() const
+  {
+    return number_of_interior_points_duplicate + number_of_interior_points_encroaching +
+           number_of_interior_points_outside;
+  }
+  std::size_t number_of_steiner_points() const
+  {
+    return number_of_steiner_points_on_edges + number_of_steiner_points_on_triangles;
+  }
+  /// share (0 to 1) of the input triangles that are a single mesh facet
+  double share_of_triangles_kept_whole() const
+  {
+    const std::size_t n = number_of_triangles_kept_whole + number_of_triangles_split;
+    return n == 0 ? 1. : double(number_of_triangles_kept_whole) / double(n);
+  }
+};
+
+/// writes the report in a few lines
+inline std::ostream& operator<<(std::ostream& os, const Tetrahedralization_report& r)
+{
+  os << "vertices " << r.number_of_vertices << ", cells " << r.number_of_cells << ", surface facets "
+     << r.number_of_facets << "\n"
+     << "interior points: " << r.number_of_interior_points_inserted << " inserted, "
+     << r.number_of_interior_points_duplicate << " duplicate, " << r.number_of_interior_points_encroaching
+     << " encroaching, " << r.number_of_interior_points_outside << " outside\n"
+     << "Steiner points: " << r.number_of_steiner_points_on_edges << " on edges, "
+     << r.number_of_steiner_points_on_triangles << " on triangles\n"
+     << "input triangles kept whole: " << r.number_of_triangles_kept_whole << " of "
+     << (r.number_of_triangles_kept_whole + r.number_of_triangles_split) << " ("
+     << 100. * r.share_of_triangles_kept_whole() << " %)\n"
+     << "time (s): filtering " << r.time_filtering << ", insertion " << r.time_insertion << ", recovery "
+     << r.time_recovery << ", labelling " << r.time_labelling;
+  return os;
+}
+
+namespace internal {
+
+// Marks the interior points to drop: duplicates of model points or of earlier
+// interior points, and (if asked) points in the closed diametral ball of an
+// input edge or the closed equatorial ball of a well-shaped input triangle,
+// where they would keep it out of the Delaunay triangulation - but only balls
+// that hold no other model point: an element that model points encroach upon
+// gets split anyway, and dropping would only empty its surroundings.
+template <class GeomTraits, class Recovery>
+void mark_dropped_interior_points(const Geological_model_3<GeomTraits>& model,
+                                  const std::vector<typename GeomTraits::Point_3>& interior,
+                                  const Recovery& recovery, bool drop_encroaching, double ratio_bound,
+                                  std::vector<char>& dropped, Tetrahedralization_report& report)
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  const GeomTraits gt;
+  auto less = [&](const Point_3& a, const Point_3& b) { return gt.compare_xyz_3_object()(a, b) == CGAL::SMALLER; };
+
+  dropped.assign(interior.size(), 0);
+  std::vector<Point_3> model_sorted = model.points();
+  std::sort(model_sorted.begin(), model_sorted.end(), less);
+  std::vector<std::size_t> order(interior.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return less(interior[a], interior[b]); });
+  for(std::size_t k = 0; k < order.size(); ++k)
+  {
+    const Point_3& p = interior[order[k]];
+    if((k > 0 && interior[order[k - 1]] == p) ||
+       std::binary_search(model_sorted.begin(), model_sorted.end(), p, less))
+    {
+      dropped[order[k]] = 1;
+      ++report.number_of_interior_points_duplicate;
+    }
+  }
+  if(!drop_encroaching || interior.empty()) return;
+
+  typedef typename CGAL::Pointer_property_map<Point_3>::const_type                 Point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<GeomTraits> > Traits;
+  typedef CGAL::Kd_tree<Traits>                                                    Tree;
+  typedef CGAL::Fuzzy_sphere<Traits>                                               Sphere;
+
+  std::vector<std::size_t> kept, all_model(model.number_of_points());
+  for(std::size_t i = 0; i < interior.size(); ++i)
+    if(!dropped[i]) kept.push_back(i);
+  for(std::size_t i = 0; i < all_model.size(); ++i) all_model[i] = i;
+  const Point_map interior_map = CGAL::make_property_map(interior);
+  const Point_map model_map = CGAL::make_property_map(model.points());
+  Tree interior_tree(kept.begin(), kept.end(), typename Tree::Splitter(), Traits(interior_map));
+  Tree model_tree(all_model.begin(), all_model.end(), typename Tree::Splitter(), Traits(model_map));
+  std::vector<std::size_t> found;
+  // `inside` is the exact test; the search ball is a little larger
+  auto search = [&](const Tree& tree, const Point_map& map, const Point_3& center, double radius) {
+    found.clear();
+    tree.search(std::back_inserter(found), Sphere(center, radius * (1. + 1e-9), 0., Traits(map)));
+  };
+  auto drop_in = [&](const Point_3& center, double radius, const std::array<std::size_t, 3>& corners,
+                     auto&& inside) {
+    search(model_tree, model_map, center, radius);
+    for(std::size_t i : found)
+      if(i != corners[0] && i != corners[1] && i != corners[2] && inside(model.point(i))) return;
+    search(interior_tree, interior_map, center, radius);
+    for(std::size_t i : found)
+      if(!dropped[i] && inside(interior[i]))
+      {
+        dropped[i] = 1;
+        ++report.number_of_interior_points_encroaching;
+      }
+  };
+  auto side = gt.side_of_bounded_sphere_3_object();
+  for(const auto& e : recovery.edge_ends())
+  {
+    const Point_3& a = model.point(e[0]);
+    const Point_3& b = model.point(e[1]);
+    drop_in(CGAL::midpoint(a, b), 0.5 * std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))),
+            {{e[0], e[1], e[1]}}, [&](const Point_3& p) { return side(a, b, p) != CGAL::ON_UNBOUNDED_SIDE; });
+  }
+  for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+  {
+    const auto& tri = model.triangle(t);
+    const Point_3& a = model.point(tri[0]);
+    const Point_3& b = model.point(tri[1]);
+    const Point_3& c = model.point(tri[2]);
+    const double r2 = CGAL::to_double(CGAL::squared_radius(a, b, c));
+    const double l2 = (std::min)({CGAL::to_double(CGAL::squared_distance(a, b)),
+                                  CGAL::to_double(CGAL::squared_distance(b, c)),
+                                  CGAL::to_double(CGAL::squared_distance(c, a))});
+    // a needle or cap has a huge ball, and gets split anyway
+    if(!(r2 <= ratio_bound * ratio_bound * l2)) continue;
+    drop_in(CGAL::circumcenter(a, b, c), std::sqrt(r2), tri,
+            [&](const Point_3& p) { return side(a, b, c, p) != CGAL::ON_UNBOUNDED_SIDE; });
+  }
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+Builds the tetrahedral mesh of a geological model from its points and the
+relaxed interior bubble centres: one Delaunay triangulation of all points,
+in which every input triangle is then recovered exactly as a union of mesh
+facets by adding Steiner points on input edges and triangles (input points
+never move, Steiner points never leave the input surfaces), and whose cells
+are labelled with their regions.
+
+The steps:
+1. interior points on a model point or on an earlier interior point are
+   dropped; so are (by default) those in the closed diametral ball of an input
+   edge or the closed equatorial ball of a well-shaped input triangle, which
+   would keep it out of the triangulation, when no other model point lies in
+   that ball (else the element is split anyway);
+2. all points go into the triangulation of `c3t3` (spatially sorted,
+   sequential insertion: the triangulation of a point set is unique, also in
+   degenerate cases since CGAL breaks ties by symbolic perturbation, and
+   sequential insertion keeps the storage order, hence vertex numbering in
+   files, the same from run to run);
+3. input edges, then input triangles, are recovered (see the package manual:
+   missing subsegments are split at midpoints or, next to an input vertex, on
+   power-of-two shells around it; missing sub-triangles get their circumcentre
+   unless it encroaches upon a subsegment, which is then split instead);
+4. facets on input triangles enter the complex with patch index + 1, cells
+   get the region on their side by a flood fill that crosses no such facet;
+   interior points outside every region are removed.
+
+\param model a valid geological model (see `validate_geological_model()`)
+\param interior_points points inside the regions (relaxed bubble centres)
+\param c3t3 the output; cleared first
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{drop_encroaching_points}
+    \cgalParamDescription{whether interior points that encroach on input edges or triangles are dropped}
+    \cgalParamType{bool}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{drop_ball_ratio_bound}
+    \cgalParamDescription{a triangle's equatorial ball drops points only if its radius is at most this
+      times the triangle's shortest edge (`1`: smallest angle at least 30 degrees)}
+    \cgalParamType{double}
+    \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_number_of_steiner_points}
+    \cgalParamDescription{beyond this many Steiner points recovery stops with an error}
+    \cgalParamType{std::size_t}
+    \cgalParamDefault{20 times the number of model points and triangles, plus 10000}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_split_length}
+    \cgalParamDescription{recovery stops with an error rather than cut an input edge into pieces shorter than
+      this fraction of the bounding-box diagonal}
+    \cgalParamType{double}
+    \cgalParamDefault{`1e-9`}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{progress on `std::cout`}
+    \cgalParamType{bool}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns what was done (`Tetrahedralization_report`)
+\throws Tetrahedralization_error naming the triangle, edge or cell when recovery
+  or labelling fails; `c3t3` is then unspecified.
+*/
+template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Tetrahedralization_report
+tetrahedralize_bubbles(const Geological_model_3<GeomTraits>& model,
+                       const std::vector<typename GeomTraits::Point_3>& interior_points,
+                       Mesh_complex_3<GeomTraits>& c3t3,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef Mesh_complex_3<GeomTraits>           C3T3;
+  typedef typename C3T3::Triangulation         Tr;
+  typedef typename Tr::Vertex_handle           Vertex_handle;
+  typedef typename Tr::Cell_handle             Cell_handle;
+  typedef typename GeomTraits::Point_3         Point_3;
+  typedef internal::Surface_recovery<Tr, GeomTraits> Recovery;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  Tetrahedralization_report report;
+  c3t3.clear();
+  if(model.number_of_triangles() == 0)
+    throw Tetrahedralization_error("the model has no triangles");
+
+  const bool drop = choose_parameter(get_parameter(np, internal_np::drop_encroaching_points), true);
+  const double ratio_bound = choose_parameter(get_parameter(np, internal_np::drop_ball_ratio_bound), 1.);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const Bbox_3 box = bbox(model);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  typename Recovery::Options options;
+  options.maximum_number_of_steiner_points = choose_parameter(
+    get_parameter(np, internal_np::maximum_number_of_steiner_points),
+    std::size_t(20 * (model.number_of_points() + model.number_of_triangles()) + 10000));
+  options.minimum_split_length = diagonal * choose_parameter(get_parameter(np, internal_np::minimum_split_length), 1e-9);
+  options.verbose = verbose;
+
+  Tr& tr = c3t3.triangulation();
+  Recovery recovery(model, tr, options);
+
+  // 1. drop interior points
+  CGAL::Real_timer timer;
+  timer.start();
+  std::vector<char> dropped;
+  internal::mark_dropped_interior_points(model, interior_points, recovery, drop, ratio_bound, dropped, report);
+  std::vector<Point_3> kept;
+  for(std::size_t i = 0; i < interior_points.size(); ++i)
+    if(!dropped[i]) kept.push_back(interior_points[i]);
+  report.time_filtering = timer.time();
+  if(verbose)
+    std::cout << "tetrahedralize: " << kept.size() << " interior points kept, "
+              << report.number_of_interior_points_duplicate << " duplicate, "
+              << report.number_of_interior_points_encroaching << " encroaching (" << report.time_filtering << " s)"
+              << std::endl;
+
+  // 2. one Delaunay triangulation of everything
+  timer.reset();
+  recovery.insert_points(kept);
+  report.time_insertion = timer.time();
+  if(verbose)
+    std::cout << "tetrahedralize: " << tr.number_of_vertices() << " vertices inserted (" << report.time_insertion
+              << " s)" << std::endl;
+
+  // 3. conforming recovery of the input edges and triangles
+  timer.reset();
+  recovery.recover();
+  report.time_recovery = timer.time();
+  report.number_of_steiner_points_on_edges = recovery.number_of_edge_points();
+  report.number_of_steiner_points_on_triangles = recovery.number_of_triangle_points();
+  for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+    (recovery.is_kept_whole(t) ? report.number_of_triangles_kept_whole : report.number_of_triangles_split) += 1;
+  if(verbose)
+    std::cout << "tetrahedralize: " << recovery.number_of_edge_points() << " Steiner points on edges, "
+              << recovery.number_of_triangle_points() << " on triangles (" << report.time_recovery << " s)"
+              << std::endl;
+
+  // 4. labels, vertex dimensions, clean-up
+  timer.reset();
+  internal::label_regions(model, recovery, c3t3);
+  if(verbose) std::cout << "tetrahedralize: regions labelled (" << timer.time() << " s)" << std::endl;
+  std::vector<std::size_t> patch_of_point(model.number_of_points(), no_index);
+  for(std::size_t t = model.number_of_triangles(); t-- > 0;)
+    for(std::size_t v : model.triangle(t)) patch_of_point[v] = model.patch_of_triangle(t);
+  std::vector<Cell_handle> cells;
+  for(const auto& r : recovery.records())
+  {
+    std::size_t patch = no_index;
+    switch(r.kind)
+    {
+    case internal::Vertex_kind::input_point: patch = patch_of_point[r.element]; break;
+    case internal::Vertex_kind::edge_point: patch = model.patch_of_triangle(recovery.triangle_of_edge(r.element)); break;
+    case internal::Vertex_kind::triangle_point: patch = model.patch_of_triangle(r.element); break;
+    default: break;
+    }
+    const Vertex_handle v = r.vh;
+    if(patch != no_index)
+    {
+      c3t3.set_dimension(v, 2);
+      c3t3.set_index(v, int(patch) + 1);
+      continue;
+    }
+    cells.clear();
+    tr.incident_cells(v, std::back_inserter(cells));
+    int region = 0;
+    for(Cell_handle c : cells)
+      if(c3t3.is_in_complex(c)) { region = c3t3.subdomain_index(c); break; }
+    if(region == 0)
+    {
+      c3t3.set_dimension(v, -1);
+      if(r.kind == internal::Vertex_kind::interior_point) ++report.number_of_interior_points_outside;
+      continue;
+    }
+    c3t3.set_dimension(v, 3);
+    c3t3.set_index(v, region);
+    if(r.kind == internal::Vertex_kind::interior_point) ++report.number_of_interior_points_inserted;
+  }
+  if(verbose) std::cout << "tetrahedralize: vertex dimensions set (" << timer.time() << " s)" << std::endl;
+  // interior points outside the model: their removal only touches cells outside
+  if(report.number_of_interior_points_outside > 0) c3t3.remove_isolated_vertices();
+  report.time_labelling = timer.time();
+
+  report.number_of_vertices = tr.number_of_vertices();
+  report.number_of_cells = c3t3.number_of_cells_in_complex();
+  report.number_of_facets = c3t3.number_of_facets_in_complex();
+  if(verbose) std::cout << report << std::endl;
+  return report;
+}
+
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_TETRAHEDRALIZE_BUBBLES_H

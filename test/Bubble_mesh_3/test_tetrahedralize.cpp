@@ -1,0 +1,548 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Tests tetrahedralize_bubbles(): Delaunay insertion, conforming recovery of
+// the input surfaces, region labelling, and extract_region_mesh(), on models
+// built here (layers, a fault inside a region, a thin layer, a pinch-out and a
+// fault meeting a horizon at small angles), on the package's generated model
+// and on the real GOCAD models when ../shared is there.
+//
+// Optional argument: a model file (.ml) to test alone, without the time budget.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/Mesh_complex_3.h>
+#include <CGAL/Bubble_mesh_3/extract_region_mesh.h>
+#include <CGAL/Bubble_mesh_3/geological_model_measures.h>
+#include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
+
+#if __has_include(<CGAL/Bubble_mesh_3/make_layered_model.h>)
+#include <CGAL/Bubble_mesh_3/make_layered_model.h>
+#define BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
+#endif
+#if __has_include(<CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>)
+#include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
+#define BUBBLE_MESH_3_TEST_HAS_GOCAD_READER
+#endif
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/IO/File_medit.h>
+#include <CGAL/Random.h>
+
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3                                          Point_3;
+typedef K::Vector_3                                         Vector_3;
+typedef CGAL::Bubble_mesh_3::Geological_model_3<K>          Model;
+typedef CGAL::Bubble_mesh_3::Mesh_complex_3<K>              C3T3;
+typedef C3T3::Triangulation                                 Tr;
+typedef CGAL::Bubble_mesh_3::Tetrahedralization_report      Report;
+typedef std::function<double(double, double)>               Height;
+
+namespace BM = CGAL::Bubble_mesh_3;
+
+// ---- models built in memory ----------------------------------------------------
+
+// adds points once (by exact coordinates) and triangles oriented along a wanted normal
+struct Builder
+{
+  Model& m;
+  std::map<std::array<double, 3>, std::size_t> index;
+  explicit Builder(Model& model) : m(model) {}
+
+  std::size_t point(double x, double y, double z)
+  {
+    auto ins = index.emplace(std::array<double, 3>{{x, y, z}}, m.number_of_points());
+    if(ins.second) m.add_point(Point_3(x, y, z));
+    return ins.first->second;
+  }
+  void triangle(std::size_t a, std::size_t b, std::size_t c, std::size_t patch, const Vector_3& wanted)
+  {
+    if(a == b || b == c || c == a) return; // collapsed by a pinch-out
+    const Vector_3 n = CGAL::cross_product(m.point(b) - m.point(a), m.point(c) - m.point(a));
+    if(n * wanted < 0) std::swap(b, c);
+    m.add_triangle(a, b, c, patch);
+  }
+  // two triangles, split along the Delaunay diagonal (the surfaces of bubble
+  // meshes are Delaunay-like; a non-Delaunay input edge gets split)
+  void quad(std::size_t p00, std::size_t p10, std::size_t p11, std::size_t p01, std::size_t patch,
+            const Vector_3& wanted)
+  {
+    if(p00 != p10 && p10 != p11 && p00 != p11 && p01 != p00 && p01 != p11 &&
+       CGAL::side_of_bounded_sphere(m.point(p00), m.point(p10), m.point(p11), m.point(p01)) == CGAL::ON_BOUNDED_SIDE)
+    {
+      triangle(p00, p10, p01, patch, wanted);
+      triangle(p10, p11, p01, patch, wanted);
+      return;
+    }
+    triangle(p00, p10, p11, patch, wanted);
+    triangle(p00, p11, p01, patch, wanted);
+  }
+};
+
+// deterministic jitter in [-1, 1] for grid node (i, j) and a salt
+double jitter(int i, int j, int salt)
+{
+  unsigned h = unsigned(i) * 73856093u ^ unsigned(j) * 19349663u ^ unsigned(salt) * 83492791u;
+  h ^= h >> 13; h *= 0x5bd1e995u; h ^= h >> 15;
+  return double(h % 20001u) / 10000. - 1.;
+}
+
+// The horizontal grid of the box models: nodes (X(i,j), Y(i,j)), moved a
+// little inside the box faces so that no four of them are cocircular (a
+// square grid would make every quad's diagonal a degenerate Delaunay edge).
+struct Grid
+{
+  int n;
+  double X(int i, int j) const { return (i == 0 || i == n) ? double(i) / n : (i + 0.3 * jitter(i, j, 0)) / n; }
+  double Y(int i, int j) const { return (j == 0 || j == n) ? double(j) / n : (j + 0.3 * jitter(i, j, 1)) / n; }
+};
+
+// The unit box cut by horizons z = h_k(x,y) (bottom to top, they may touch on
+// the box sides): layer L (1-based, from the bottom) is region L; each layer's
+// sides are one patch. `nz[L-1]` vertical subdivisions in layer L.
+void make_layered_box(Model& m, const Grid& grid, const std::vector<Height>& horizons, const std::vector<int>& nz)
+{
+  Builder b(m);
+  const int n = grid.n;
+  const int layers = int(horizons.size()) + 1;
+  for(int l = 1; l <= layers; ++l) m.add_region("layer_" + std::to_string(l));
+  auto level = [&](int k, double x, double y) {
+    return k == 0 ? 0. : (k == layers ? 1. : horizons[std::size_t(k - 1)](x, y));
+  };
+  // horizontal surfaces: bottom (k = 0), horizons, top (k = layers)
+  for(int k = 0; k <= layers; ++k)
+  {
+    const std::size_t patch = m.add_patch(k == 0 ? "bottom" : k == layers ? "top" : "horizon_" + std::to_string(k),
+                                          std::size_t(k == layers ? 0 : k + 1), std::size_t(k));
+    auto p = [&](int a, int c) {
+      return b.point(grid.X(a, c), grid.Y(a, c), level(k, grid.X(a, c), grid.Y(a, c)));
+    };
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+        b.quad(p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1), patch, Vector_3(0, 0, 1));
+  }
+  // sides, per layer
+  for(int l = 1; l <= layers; ++l)
+  {
+    const std::size_t patch = m.add_patch("sides_" + std::to_string(l), 0, std::size_t(l));
+    const int s = nz[std::size_t(l - 1)];
+    for(int side = 0; side < 4; ++side)
+    {
+      // side 0: y = 0, 1: x = 1, 2: y = 1, 3: x = 0; node i along it
+      auto node = [&](int i) {
+        return side == 0 ? std::make_pair(grid.X(i, 0), 0.) : side == 1 ? std::make_pair(1., grid.Y(n, i))
+             : side == 2 ? std::make_pair(grid.X(i, n), 1.) : std::make_pair(0., grid.Y(0, i));
+      };
+      const Vector_3 out = side == 0 ? Vector_3(0, -1, 0) : side == 1 ? Vector_3(1, 0, 0)
+                         : side == 2 ? Vector_3(0, 1, 0) : Vector_3(-1, 0, 0);
+      auto p = [&](int i, int v) {
+        const auto q = node(i);
+        const double z0 = level(l - 1, q.first, q.second), z1 = level(l, q.first, q.second);
+        // box edges (i = 0, n) stay straight: they are shared by two sides
+        const double w = (i == 0 || i == n) ? double(v) : v + 0.25 * jitter(i, v, 2 + side + 4 * l);
+        const double z = v == 0 ? z0 : v == s ? z1 : z0 + (z1 - z0) * w / double(s);
+        return b.point(q.first, q.second, z);
+      };
+      for(int i = 0; i < n; ++i)
+        for(int v = 0; v < s; ++v)
+          b.quad(p(i, v), p(i + 1, v), p(i + 1, v + 1), p(i, v + 1), patch, out);
+    }
+  }
+}
+
+// a patch inside `region` on the grid of nodes `point(i, j)`, 0 <= i <= nu, 0 <= j <= nv
+void add_inner_surface(Model& m, const std::string& name, std::size_t region,
+                       const std::function<Point_3(int, int)>& point, int nu, int nv)
+{
+  Builder b(m);
+  for(std::size_t i = 0; i < m.number_of_points(); ++i)
+    b.index.emplace(std::array<double, 3>{{m.point(i).x(), m.point(i).y(), m.point(i).z()}}, i);
+  const std::size_t patch = m.add_patch(name, region, region);
+  const Point_3 o = point(0, 0);
+  const Vector_3 normal = CGAL::cross_product(point(nu, 0) - o, point(0, nv) - o);
+  auto p = [&](int i, int j) {
+    const Point_3 q = point(i, j);
+    return b.point(q.x(), q.y(), q.z());
+  };
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+      b.quad(p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1), patch, normal);
+}
+
+// a jittered lattice of spacing h in the box [lo, hi]^3 (deterministic)
+std::vector<Point_3> jittered_lattice(const CGAL::Bbox_3& box, double h, unsigned seed)
+{
+  CGAL::Random rng(seed);
+  std::vector<Point_3> pts;
+  const int nx = int(std::floor((box.xmax() - box.xmin()) / h));
+  const int ny = int(std::floor((box.ymax() - box.ymin()) / h));
+  const int nz = int(std::floor((box.zmax() - box.zmin()) / h));
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j)
+      for(int k = 0; k < nz; ++k)
+        pts.emplace_back(box.xmin() + (i + 0.5 + rng.get_double(-0.3, 0.3)) * h,
+                         box.ymin() + (j + 0.5 + rng.get_double(-0.3, 0.3)) * h,
+                         box.zmin() + (k + 0.5 + rng.get_double(-0.3, 0.3)) * h);
+  return pts;
+}
+
+// ---- checks ----------------------------------------------------------------------
+
+void check_mesh(const std::string& name, const Model& m, const C3T3& c3t3, const Report& report)
+{
+  const Tr& tr = c3t3.triangulation();
+  auto bare = tr.geom_traits().construct_point_3_object();
+  const CGAL::Bbox_3 box = BM::bbox(m);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const Point_3 o(0.5 * (box.xmin() + box.xmax()), 0.5 * (box.ymin() + box.ymax()), 0.5 * (box.zmin() + box.zmax()));
+
+  assert(tr.is_valid());
+  assert(c3t3.number_of_cells_in_complex() == report.number_of_cells);
+
+  // vertices: no duplicates, every model point present
+  std::vector<Point_3> vertices;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) vertices.push_back(bare(v->point()));
+  std::sort(vertices.begin(), vertices.end());
+  assert(std::adjacent_find(vertices.begin(), vertices.end()) == vertices.end());
+  for(const Point_3& p : m.points()) assert(std::binary_search(vertices.begin(), vertices.end(), p));
+  std::vector<Point_3> model_points = m.points();
+  std::sort(model_points.begin(), model_points.end());
+  auto is_model_point = [&](const Point_3& p) { return std::binary_search(model_points.begin(), model_points.end(), p); };
+
+  // cells: positive, labelled, volumes per region (relative to the box centre: fewer lost digits)
+  std::vector<double> volume(m.number_of_regions() + 1, 0.);
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    const int r = c3t3.subdomain_index(c);
+    assert(r >= 1 && std::size_t(r) <= m.number_of_regions());
+    const Point_3 p[4] = {bare(c->vertex(0)->point()), bare(c->vertex(1)->point()), bare(c->vertex(2)->point()),
+                          bare(c->vertex(3)->point())};
+    assert(CGAL::orientation(p[0], p[1], p[2], p[3]) == CGAL::POSITIVE);
+    const Vector_3 a = p[1] - p[0], b = p[2] - p[0], d = p[3] - p[0];
+    volume[std::size_t(r)] += CGAL::cross_product(a, b) * d / 6.;
+  }
+  const std::vector<double> expected = BM::region_volumes(m);
+  double worst_volume = 0.;
+  for(std::size_t r = 1; r <= m.number_of_regions(); ++r)
+  {
+    const double rel = std::abs(volume[r] - expected[r]) / std::abs(expected[r]);
+    worst_volume = (std::max)(worst_volume, rel);
+    if(!(rel < 1e-9))
+      std::cerr << name << ": region " << r << " volume " << volume[r] << " expected " << expected[r] << std::endl;
+    assert(rel < 1e-9);
+  }
+
+  // facets: each on the input triangle of its patch, areas add up per triangle
+  typedef std::vector<K::Triangle_3>::const_iterator Iterator;
+  typedef CGAL::AABB_triangle_primitive<K, Iterator> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+  std::vector<K::Triangle_3> triangles;
+  for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+    triangles.emplace_back(m.point(m.triangle(t)[0]), m.point(m.triangle(t)[1]), m.point(m.triangle(t)[2]));
+  Tree tree(triangles.begin(), triangles.end());
+  std::vector<double> area(m.number_of_triangles(), 0.);
+  std::vector<std::size_t> facets_of(m.number_of_triangles(), 0);
+  const double tolerance = 1e-12 * diagonal;
+  std::size_t exact_checks = 0, tolerance_checks = 0;
+  double worst_distance = 0.;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    const int patch = c3t3.surface_patch_index(*f);
+    assert(patch >= 1 && std::size_t(patch) <= m.number_of_patches());
+    Point_3 p[3];
+    for(int k = 0; k < 3; ++k) p[k] = bare(f->first->vertex(Tr::vertex_triple_index(f->second, k))->point());
+    const Point_3 g = CGAL::centroid(p[0], p[1], p[2]);
+    const std::size_t t = std::size_t(tree.closest_point_and_primitive(g).second - triangles.begin());
+    assert(m.patch_of_triangle(t) + 1 == std::size_t(patch));
+    const bool all_input = is_model_point(p[0]) && is_model_point(p[1]) && is_model_point(p[2]);
+    for(int k = 0; k < 3; ++k)
+    {
+      if(all_input)
+        assert(triangles[t].has_on(p[k])); // exact
+      else
+      {
+        const double d = std::sqrt(CGAL::squared_distance(triangles[t], p[k]));
+        worst_distance = (std::max)(worst_distance, d);
+        assert(d <= tolerance);
+      }
+    }
+    ++(all_input ? exact_checks : tolerance_checks);
+    area[t] += std::sqrt(CGAL::squared_area(p[0], p[1], p[2]));
+    ++facets_of[t];
+    // the cells on both sides carry the patch's regions
+    const auto& pa = m.patch(m.patch_of_triangle(t));
+    const int r1 = c3t3.subdomain_index(f->first);
+    const int r2 = c3t3.subdomain_index(f->first->neighbor(f->second));
+    assert((std::size_t(r1) == pa.positive_region && std::size_t(r2) == pa.negative_region) ||
+           (std::size_t(r2) == pa.positive_region && std::size_t(r1) == pa.negative_region));
+  }
+  double worst_area = 0.;
+  std::size_t whole = 0;
+  for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+  {
+    assert(facets_of[t] >= 1);
+    if(facets_of[t] == 1) ++whole;
+    const double a = std::sqrt(triangles[t].squared_area());
+    const double rel = std::abs(area[t] - a) / a;
+    worst_area = (std::max)(worst_area, rel);
+    assert(rel < 1e-9);
+  }
+  assert(whole == report.number_of_triangles_kept_whole);
+
+  // extract_region_mesh: the regions' tetrahedra add up
+  std::size_t tets = 0;
+  for(std::size_t r = 1; r <= m.number_of_regions(); ++r)
+  {
+    const auto region = BM::extract_region_mesh(c3t3, int(r));
+    tets += region.tetrahedra.size();
+    double v = 0., boundary = 0.;
+    for(const auto& q : region.tetrahedra)
+      v += CGAL::cross_product(region.points[q[1]] - region.points[q[0]], region.points[q[2]] - region.points[q[0]]) *
+           (region.points[q[3]] - region.points[q[0]]) / 6.;
+    // divergence theorem on the outward boundary gives the volume again
+    for(const auto& q : region.boundary)
+      boundary += CGAL::cross_product(region.points[q[0]] - o, region.points[q[1]] - o) * (region.points[q[2]] - o) / 6.;
+    assert(std::abs(v - expected[r]) <= 1e-9 * std::abs(expected[r]));
+    assert(std::abs(boundary - expected[r]) <= 1e-9 * std::abs(expected[r]));
+    assert(region.boundary.size() == region.boundary_patches.size());
+  }
+  assert(tets == c3t3.number_of_cells_in_complex());
+
+  // CGAL's Medit writer accepts it
+  std::ostringstream medit;
+  CGAL::IO::output_to_medit(medit, c3t3);
+  assert(medit.str().find("Tetrahedra") != std::string::npos);
+
+  std::cout << name << ": " << report.number_of_vertices << " vertices, " << report.number_of_cells << " cells, "
+            << report.number_of_facets << " surface facets; interior points " << report.number_of_interior_points_inserted
+            << " kept, " << report.number_of_interior_points_encroaching << " dropped (encroaching), "
+            << report.number_of_interior_points_duplicate << " duplicate, " << report.number_of_interior_points_outside
+            << " outside\n  Steiner points: " << report.number_of_steiner_points_on_edges << " on edges, "
+            << report.number_of_steiner_points_on_triangles << " on triangles; input triangles kept whole "
+            << report.number_of_triangles_kept_whole << "/" << m.number_of_triangles() << " ("
+            << 100. * report.share_of_triangles_kept_whole() << " %)\n  checks: volume rel. error <= " << worst_volume
+            << ", area rel. error <= " << worst_area << ", " << exact_checks << " facets exactly on their triangle, "
+            << tolerance_checks << " with Steiner points within " << worst_distance << " (<= " << tolerance
+            << ")\n  time (s): filtering " << report.time_filtering << ", insertion " << report.time_insertion
+            << ", recovery " << report.time_recovery << ", labelling " << report.time_labelling << std::endl;
+}
+
+Report mesh_and_check(const std::string& name, const Model& m, const std::vector<Point_3>& interior, C3T3& c3t3)
+{
+  const Report report = BM::tetrahedralize_bubbles(m, interior, c3t3);
+  check_mesh(name, m, c3t3, report);
+  return report;
+}
+
+// ---- tests ------------------------------------------------------------------------
+
+Model two_layers(int n)
+{
+  Model m;
+  make_layered_box(m, Grid{n}, {[](double, double) { return 0.5; }}, {n / 2, n / 2});
+  return m;
+}
+
+void test_two_layers()
+{
+  const Model m = two_layers(8);
+  C3T3 c3t3;
+  const Report r = mesh_and_check("two layers", m, jittered_lattice(BM::bbox(m), 0.1, 1), c3t3);
+  assert(m.number_of_regions() == 2);
+  assert(r.number_of_interior_points_inserted > 300);
+  // a well-shaped surface with interior points kept out of its balls stays mostly whole
+  assert(r.share_of_triangles_kept_whole() > 0.5);
+
+  // same input, same mesh: same points in the same order
+  C3T3 again;
+  BM::tetrahedralize_bubbles(m, jittered_lattice(BM::bbox(m), 0.1, 1), again);
+  assert(again.triangulation().number_of_vertices() == c3t3.triangulation().number_of_vertices());
+  auto v = c3t3.triangulation().finite_vertices_begin();
+  for(auto w = again.triangulation().finite_vertices_begin(); w != again.triangulation().finite_vertices_end(); ++w, ++v)
+    assert(v->point() == w->point());
+  std::cout << "  deterministic: a second run gives the same " << again.triangulation().number_of_vertices()
+            << " vertices in the same order" << std::endl;
+
+  // without dropping, the lattice points near the surfaces cost Steiner points
+  C3T3 kept;
+  const Report all = BM::tetrahedralize_bubbles(m, jittered_lattice(BM::bbox(m), 0.1, 1), kept,
+                                                BM::parameters::drop_encroaching_points(false));
+  check_mesh("two layers, no dropping", m, kept, all);
+  assert(all.number_of_interior_points_encroaching == 0);
+  assert(all.number_of_steiner_points() > r.number_of_steiner_points());
+
+  // the surface alone: every triangle kept whole is the exact Delaunay case
+  C3T3 bare;
+  const Report none = BM::tetrahedralize_bubbles(m, std::vector<Point_3>(), bare);
+  check_mesh("two layers, no interior points", m, bare, none);
+}
+
+void test_fault_inside_region()
+{
+  Model m = two_layers(8);
+  // a vertical fault in the lower layer, ending inside it on all sides
+  add_inner_surface(m, "fault", 1,
+                    [](int i, int j) {
+                      const bool inner = i > 0 && i < 4 && j > 0 && j < 3;
+                      return Point_3(0.5, 0.25 + (i + (inner ? 0.3 * jitter(i, j, 7) : 0.)) / 8.,
+                                     0.1 + (j + (inner ? 0.3 * jitter(i, j, 8) : 0.)) / 10.);
+                    },
+                    4, 3);
+  C3T3 c3t3;
+  mesh_and_check("fault inside a region", m, jittered_lattice(BM::bbox(m), 0.1, 2), c3t3);
+  // the fault's facets have region 1 on both sides
+  std::size_t fault_facets = 0;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    if(c3t3.surface_patch_index(*f) == int(m.number_of_patches()))
+    {
+      ++fault_facets;
+      assert(c3t3.subdomain_index(f->first) == 1 && c3t3.subdomain_index(f->first->neighbor(f->second)) == 1);
+    }
+  assert(fault_facets >= 24);
+  std::cout << "  fault facets: " << fault_facets << ", region 1 on both sides" << std::endl;
+}
+
+void test_thin_layer()
+{
+  Model m;
+  make_layered_box(m, Grid{10}, {[](double, double) { return 0.5; }, [](double, double) { return 0.52; }},
+                   {5, 1, 5});
+  C3T3 c3t3;
+  mesh_and_check("thin layer (0.02 thick, triangles 0.1 wide)", m, jittered_lattice(BM::bbox(m), 0.1, 3), c3t3);
+}
+
+void test_pinch_out()
+{
+  // layer 2 thins out to nothing at x = 0: its horizons meet at atan(0.1) = 5.7 degrees
+  Model m;
+  make_layered_box(m, Grid{8}, {[](double, double) { return 0.4; }, [](double x, double) { return 0.4 + 0.1 * x; }},
+                   {4, 2, 4});
+  C3T3 c3t3;
+  mesh_and_check("pinch-out at 5.7 degrees", m, jittered_lattice(BM::bbox(m), 0.1, 4), c3t3);
+}
+
+void test_fault_at_small_angle()
+{
+  // a fault inside the upper layer that starts on a line of the horizon's
+  // grid and rises at 5 degrees in x
+  const Grid grid{10};
+  Model m;
+  make_layered_box(m, grid, {[](double, double) { return 0.5; }}, {5, 5});
+  const double slope = std::tan(5. * CGAL_PI / 180.);
+  add_inner_surface(m, "low-angle fault", 2,
+                    [&](int i, int j) {
+                      const double x0 = grid.X(3, 2 + j), y0 = grid.Y(3, 2 + j);
+                      const double x = i == 0 ? x0 : x0 + 0.6 * (i + (i < 6 ? 0.2 * jitter(i, j, 9) : 0.)) / 6.;
+                      return Point_3(x, y0, i == 0 ? 0.5 : 0.5 + (x - x0) * slope);
+                    },
+                    6, 6);
+  C3T3 c3t3;
+  mesh_and_check("fault meeting a horizon at 5 degrees", m, jittered_lattice(BM::bbox(m), 0.1, 5), c3t3);
+}
+
+#ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
+void test_layered_model()
+{
+  // the package's bundled model: undulating horizons, a thin layer, a fault
+  // with throw, a small fault ending inside a layer
+  Model m;
+  BM::make_layered_model(m);
+  C3T3 c3t3;
+  const Report r = mesh_and_check("generated layered model (make_layered_model)", m,
+                                  jittered_lattice(BM::bbox(m), 60., 10), c3t3);
+  assert(r.number_of_interior_points_inserted > 0);
+}
+#endif
+
+void test_errors()
+{
+  // regions swapped on the horizon: the two sides of the model disagree
+  Model m = two_layers(4);
+  m.set_patch_regions(1, 1, 2);
+  C3T3 c3t3;
+  bool thrown = false;
+  try { BM::tetrahedralize_bubbles(m, std::vector<Point_3>(), c3t3); }
+  catch(const BM::Tetrahedralization_error& e)
+  {
+    thrown = true;
+    std::cout << "inconsistent regions rejected: " << e.what() << std::endl;
+    assert(std::string(e.what()).find("region") != std::string::npos);
+  }
+  assert(thrown);
+
+  // a Steiner budget of zero on a model that needs Steiner points names a triangle or edge
+  Model pinch;
+  make_layered_box(pinch, Grid{4}, {[](double, double) { return 0.4; }, [](double x, double) { return 0.4 + 0.1 * x; }},
+                   {2, 1, 2});
+  thrown = false;
+  try
+  {
+    BM::tetrahedralize_bubbles(pinch, jittered_lattice(BM::bbox(pinch), 0.1, 6), c3t3,
+                               BM::parameters::maximum_number_of_steiner_points(0));
+  }
+  catch(const BM::Tetrahedralization_error& e)
+  {
+    thrown = true;
+    std::cout << "Steiner budget exceeded: " << e.what() << std::endl;
+    assert(std::string(e.what()).find("triangle") != std::string::npos);
+  }
+  assert(thrown);
+}
+
+#ifdef BUBBLE_MESH_3_TEST_HAS_GOCAD_READER
+void test_file(const std::string& file, double spacing_ratio, std::size_t max_steiner)
+{
+  Model m;
+  BM::IO::read_gocad_model3d(file, m);
+  const CGAL::Bbox_3 box = BM::bbox(m);
+  const double size = (std::min)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  C3T3 c3t3;
+  const Report report = BM::tetrahedralize_bubbles(m, jittered_lattice(box, spacing_ratio * size, 7), c3t3,
+                                                   BM::parameters::maximum_number_of_steiner_points(
+                                                     max_steiner, CGAL::parameters::verbose(true)));
+  check_mesh(file, m, c3t3, report);
+}
+#endif
+
+int main(int argc, char** argv)
+{
+  std::cout.precision(4);
+#ifdef BUBBLE_MESH_3_TEST_HAS_GOCAD_READER
+  if(argc > 1)
+  {
+    test_file(argv[1], argc > 2 ? std::atof(argv[2]) : 0.05,
+              argc > 3 ? std::size_t(std::atof(argv[3])) : std::size_t(2000000));
+    return EXIT_SUCCESS;
+  }
+#else
+  (void)argc; (void)argv;
+#endif
+  test_two_layers();
+  test_fault_inside_region();
+  test_thin_layer();
+  test_pinch_out();
+  test_fault_at_small_angle();
+#ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
+  test_layered_model();
+#else
+  std::cout << "SKIP: make_layered_model.h is not there" << std::endl;
+#endif
+  test_errors();
+  return EXIT_SUCCESS;
+}
