@@ -160,60 +160,81 @@ def check_tetgen(d, exp):
     return 0
 
 
-def check_ccx(d, exp):
-    found = program_and_copies(d, "ccx", "calculix-ccx", ["box.inp"])
-    if found is None:
-        return SKIP
-    ccx, work = found
-    nodes = {}
-    with open(os.path.join(work, "box.inp")) as f:
+def read_inp_nodes_and_elsets(path):
+    """node coordinates and element-set names of an Abaqus file written by write_abaqus_inp"""
+    nodes, elsets = {}, []
+    with open(path) as f:
         block = None
         for line in f:
             if line.startswith("**"):
                 continue
             if line.startswith("*"):
-                block = line.split(",")[0].strip().upper()
+                words = [w.strip() for w in line.split(",")]
+                block = words[0].upper()
+                for w in words[1:]:
+                    if block == "*ELEMENT" and w.upper().startswith("ELSET="):
+                        elsets.append(w.split("=", 1)[1])
                 continue
             if block == "*NODE":
                 v = line.split(",")
                 nodes[int(v[0])] = tuple(float(x) for x in v[1:4])
+    return nodes, elsets
+
+
+def solve_under_gravity(ccx, work, inp_name, materials):
+    """Runs CalculiX on `inp_name` in `work` as a linear-elastic body under its own weight,
+    fixed at its lowest nodes. `materials` maps each ELSET to (E, nu, rho). Checks a clean
+    run and that the largest displacement is at the top, pointing down; returns
+    (nodes, displacements, top node, base nodes)."""
+    nodes, elsets = read_inp_nodes_and_elsets(os.path.join(work, inp_name))
+    check(set(elsets) == set(materials), "ELSETs %s, materials for %s" % (sorted(elsets), sorted(materials)))
     zmin = min(p[2] for p in nodes.values())
     zmax = max(p[2] for p in nodes.values())
     base = sorted(n for n, p in nodes.items() if p[2] == zmin)
-    elsets = exp["abaqus_elsets"]
     # what the mesh writer leaves to users: materials, sections, supports, loads
-    deck = ["*INCLUDE, INPUT=box.inp"]
-    materials = {"1": (1.0e9, 0.25, 2500.0), "2": (5.0e8, 0.30, 2200.0)}
-    for r, elset in sorted(elsets.items()):
-        e, nu, rho = materials[r]
-        deck += ["*MATERIAL, NAME=ROCK%s" % r, "*ELASTIC", "%g, %g" % (e, nu), "*DENSITY", "%g" % rho]
-        deck += ["*SOLID SECTION, ELSET=%s, MATERIAL=ROCK%s" % (elset, r)]
+    deck = ["*INCLUDE, INPUT=%s" % inp_name]
+    for i, (elset, (e, nu, rho)) in enumerate(sorted(materials.items())):
+        deck += ["*MATERIAL, NAME=ROCK%d" % (i + 1), "*ELASTIC", "%g, %g" % (e, nu), "*DENSITY", "%g" % rho]
+        deck += ["*SOLID SECTION, ELSET=%s, MATERIAL=ROCK%d" % (elset, i + 1)]
     deck += ["*NSET, NSET=BASE"] + [", ".join(str(n) for n in base[i:i + 16]) for i in range(0, len(base), 16)]
     deck += ["*NSET, NSET=EVERY_NODE, GENERATE", "1, %d, 1" % max(nodes)]
     deck += ["*BOUNDARY", "BASE, 1, 3, 0.", "*STEP", "*STATIC", "*DLOAD"]
-    deck += ["%s, GRAV, 9.81, 0., 0., -1." % elset for _, elset in sorted(elsets.items())]
+    deck += ["%s, GRAV, 9.81, 0., 0., -1." % elset for elset in sorted(materials)]
     deck += ["*NODE PRINT, NSET=EVERY_NODE", "U", "*END STEP"]
-    with open(os.path.join(work, "box_gravity.inp"), "w") as f:
+    with open(os.path.join(work, "gravity.inp"), "w") as f:
         f.write("\n".join(deck) + "\n")
     env = dict(os.environ, OMP_NUM_THREADS="1")
-    p = subprocess.run([ccx, "-i", "box_gravity"], cwd=work, capture_output=True, text=True, timeout=300, env=env)
+    p = subprocess.run([ccx, "-i", "gravity"], cwd=work, capture_output=True, text=True, timeout=600, env=env)
     out = p.stdout + p.stderr
     check(p.returncode == 0, "ccx exited with %d:\n%s" % (p.returncode, out[-3000:]))
     check("*ERROR" not in out.upper(), "ccx reports errors:\n" + out[-3000:])
     check("*WARNING" not in out.upper(), "ccx warns:\n" + out[-3000:])
     check("Job finished" in out, "ccx did not finish:\n" + out[-3000:])
     u = {}
-    with open(os.path.join(work, "box_gravity.dat")) as f:
+    with open(os.path.join(work, "gravity.dat")) as f:
         for line in f:
             v = line.split()
             if len(v) == 4 and v[0].isdigit():
                 u[int(v[0])] = tuple(float(x) for x in v[1:])
-    check(len(u) == exp["points"], "ccx printed %d displacements, expected %d" % (len(u), exp["points"]))
+    check(len(u) == len(nodes), "ccx printed %d displacements, expected %d" % (len(u), len(nodes)))
     mag = {n: math.sqrt(sum(c * c for c in x)) for n, x in u.items()}
     top = max(mag, key=lambda n: (mag[n], -n))
     check(max(mag[n] for n in base) == 0.0, "ccx: the base moves")
     check(nodes[top][2] == zmax, "ccx: largest displacement at z = %g, not at the top z = %g" % (nodes[top][2], zmax))
     check(u[top][2] < 0, "ccx: the top moves up under gravity")
+    return nodes, u, mag, top, zmin, zmax
+
+
+def check_ccx(d, exp):
+    found = program_and_copies(d, "ccx", "calculix-ccx", ["box.inp"])
+    if found is None:
+        return SKIP
+    ccx, work = found
+    elsets = exp["abaqus_elsets"]
+    rocks = {"1": (1.0e9, 0.25, 2500.0), "2": (5.0e8, 0.30, 2200.0)}
+    nodes, u, mag, top, zmin, zmax = solve_under_gravity(
+        ccx, work, "box.inp", {elset: rocks[r] for r, elset in elsets.items()})
+    check(len(u) == exp["points"], "ccx printed %d displacements, expected %d" % (len(u), exp["points"]))
     # a column of the softer rock under its own weight settles rho g H^2 / (2 E) at the top
     estimate = 2200.0 * 9.81 * (zmax - zmin) ** 2 / (2 * 5.0e8)
     check(estimate / 3 < mag[top] < 3 * estimate, "ccx: top settles %g, expected about %g" % (mag[top], estimate))
@@ -222,9 +243,31 @@ def check_ccx(d, exp):
     return 0
 
 
+def check_ccx_model(inp):
+    """CalculiX on a whole model's .inp (e.g. the bundled model meshed by bubble_mesh_3):
+    one rock for every region, base fixed, own weight"""
+    work = os.path.dirname(os.path.abspath(inp))
+    ccx = shutil.which("ccx")
+    if ccx is None:
+        print("SKIP: no ccx program (Debian: calculix-ccx)")
+        return SKIP
+    _, elsets = read_inp_nodes_and_elsets(inp)
+    rock = (2.0e10, 0.25, 2600.0)
+    nodes, u, mag, top, zmin, zmax = solve_under_gravity(ccx, work, os.path.basename(inp),
+                                                         {e: rock for e in elsets})
+    # a column of rock under its own weight settles rho g H^2 / (2 E) at the top
+    estimate = rock[2] * 9.81 * (zmax - zmin) ** 2 / (2 * rock[0])
+    check(estimate / 3 < mag[top] < 3 * estimate, "ccx: top settles %g, expected about %g" % (mag[top], estimate))
+    print("ccx: %d nodes, %d regions solved; base fixed; largest displacement %.3g at z = %g (the top); "
+          "a rock column would settle %.3g" % (len(u), len(elsets), mag[top], nodes[top][2], estimate))
+    return 0
+
+
 def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "ccx-model":
+        return check_ccx_model(sys.argv[2])
     if len(sys.argv) != 3 or sys.argv[1] not in ("gmsh", "vtk", "tetgen", "ccx"):
-        print("usage: check_consumers.py gmsh|vtk|tetgen|ccx DIR")
+        print("usage: check_consumers.py gmsh|vtk|tetgen|ccx DIR   or   check_consumers.py ccx-model FILE.inp")
         return 2
     d = sys.argv[2]
     exp = load_expected(d)
