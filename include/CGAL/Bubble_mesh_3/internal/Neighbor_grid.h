@@ -1,0 +1,161 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_INTERNAL_NEIGHBOR_GRID_H
+#define CGAL_BUBBLE_MESH_3_INTERNAL_NEIGHBOR_GRID_H
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+namespace internal {
+
+/*
+A uniform grid of points over a fixed box (a region's bounding box: bubbles
+are confined to their region, so the box does not change while they move).
+
+`build()` files the points by cell with a counting sort that keeps index order
+inside a cell, so every query visits the same points in the same order: the
+force sums that use it do not depend on the thread count. Points added
+afterwards with `insert()` are chained per cell and visited after the built
+ones, in insertion order. Points outside the box go to the nearest border
+cell, which keeps queries exact (the clamp is monotone).
+
+Queries take any radius; the cell size is the interaction range, so the usual
+query visits 27 cells.
+*/
+class Neighbor_grid
+{
+public:
+  typedef std::uint32_t Index;
+  static constexpr Index none = (std::numeric_limits<Index>::max)();
+
+  Neighbor_grid() {}
+
+  /// sets the box and the cell size; the number of cells is capped at `max_cells`
+  /// (the cell size grows instead), so a huge box with few points stays small
+  void set_domain(double xmin, double ymin, double zmin,
+                  double xmax, double ymax, double zmax,
+                  double cell_size, std::size_t max_cells)
+  {
+    CGAL_precondition(cell_size > 0.);
+    origin_[0] = xmin; origin_[1] = ymin; origin_[2] = zmin;
+    const double ext[3] = {(std::max)(xmax - xmin, 0.), (std::max)(ymax - ymin, 0.),
+                           (std::max)(zmax - zmin, 0.)};
+    double h = cell_size;
+    for(;;)
+    {
+      std::size_t total = 1;
+      for(int d = 0; d < 3; ++d)
+      {
+        dims_[d] = static_cast<std::size_t>(std::floor(ext[d] / h)) + 1;
+        total *= dims_[d];
+      }
+      if(total <= (std::max<std::size_t>)(max_cells, 1)) break;
+      h *= 1.25;
+    }
+    cell_size_ = h;
+    inverse_cell_size_ = 1. / h;
+    start_.assign(number_of_cells() + 1, 0);
+    extra_head_.assign(number_of_cells(), none);
+    extra_tail_.assign(number_of_cells(), none);
+    items_.clear();
+    extra_next_.clear();
+  }
+
+  double cell_size() const { return cell_size_; }
+  std::size_t number_of_cells() const { return dims_[0] * dims_[1] * dims_[2]; }
+
+  std::size_t cell_coordinate(double v, int d) const
+  {
+    const double c = std::floor((v - origin_[d]) * inverse_cell_size_);
+    if(!(c > 0.)) return 0; // also catches NaN
+    const std::size_t i = static_cast<std::size_t>(c);
+    return (std::min)(i, dims_[d] - 1);
+  }
+
+  std::size_t cell_of(double x, double y, double z) const
+  {
+    return (cell_coordinate(z, 2) * dims_[1] + cell_coordinate(y, 1)) * dims_[0] + cell_coordinate(x, 0);
+  }
+
+  /// files points `0..n-1` (coordinates in three arrays); forgets inserted points
+  void build(const double* x, const double* y, const double* z, std::size_t n)
+  {
+    CGAL_precondition(n < none);
+    const std::size_t nc = number_of_cells();
+    cell_.resize(n);
+    std::fill(start_.begin(), start_.end(), 0);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      cell_[i] = static_cast<Index>(cell_of(x[i], y[i], z[i]));
+      ++start_[cell_[i] + 1];
+    }
+    for(std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
+    items_.resize(n);
+    std::vector<Index> fill(start_.begin(), start_.end() - 1);
+    for(std::size_t i = 0; i < n; ++i) items_[fill[cell_[i]]++] = static_cast<Index>(i);
+    std::fill(extra_head_.begin(), extra_head_.end(), none);
+    std::fill(extra_tail_.begin(), extra_tail_.end(), none);
+    extra_next_.assign(n, none);
+  }
+
+  /// adds point `i` (an index at least the `n` of the last `build()`) at `(x,y,z)`
+  void insert(std::size_t i, double x, double y, double z)
+  {
+    CGAL_precondition(i < none);
+    if(extra_next_.size() <= i) extra_next_.resize(i + 1, none);
+    const std::size_t c = cell_of(x, y, z);
+    if(extra_tail_[c] == none) extra_head_[c] = static_cast<Index>(i);
+    else extra_next_[extra_tail_[c]] = static_cast<Index>(i);
+    extra_tail_[c] = static_cast<Index>(i);
+    extra_next_[i] = none;
+  }
+
+  /// calls `f(j)` for every point whose cell meets the cube of half-side `radius` around `(x,y,z)`
+  template <class F>
+  void for_each_near(double x, double y, double z, double radius, const F& f) const
+  {
+    const std::size_t x0 = cell_coordinate(x - radius, 0), x1 = cell_coordinate(x + radius, 0);
+    const std::size_t y0 = cell_coordinate(y - radius, 1), y1 = cell_coordinate(y + radius, 1);
+    const std::size_t z0 = cell_coordinate(z - radius, 2), z1 = cell_coordinate(z + radius, 2);
+    for(std::size_t k = z0; k <= z1; ++k)
+      for(std::size_t j = y0; j <= y1; ++j)
+      {
+        const std::size_t row = (k * dims_[1] + j) * dims_[0];
+        for(std::size_t c = row + x0; c <= row + x1; ++c)
+        {
+          for(Index s = start_[c]; s < start_[c + 1]; ++s) f(std::size_t(items_[s]));
+          for(Index e = extra_head_[c]; e != none; e = extra_next_[e]) f(std::size_t(e));
+        }
+      }
+  }
+
+  /// the built points in cell order (a cheap spatial sort)
+  const std::vector<Index>& items_in_cell_order() const { return items_; }
+
+private:
+  double origin_[3] = {0., 0., 0.};
+  std::size_t dims_[3] = {1, 1, 1};
+  double cell_size_ = 1.;
+  double inverse_cell_size_ = 1.;
+  std::vector<Index> start_;      // cell c holds items_[start_[c] .. start_[c+1])
+  std::vector<Index> items_;
+  std::vector<Index> cell_;       // cell of each built point
+  std::vector<Index> extra_head_, extra_tail_, extra_next_; // inserted points, chained per cell
+};
+
+} // namespace internal
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_INTERNAL_NEIGHBOR_GRID_H

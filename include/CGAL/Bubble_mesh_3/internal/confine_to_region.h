@@ -1,0 +1,579 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_INTERNAL_CONFINE_TO_REGION_H
+#define CGAL_BUBBLE_MESH_3_INTERNAL_CONFINE_TO_REGION_H
+
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+namespace internal {
+
+/// what `Region_confinement` does to a proposed position
+enum class Confinement_result
+{
+  UNCHANGED, ///< the position is valid as it is
+  MOVED,     ///< the position was put back inside or out of a diametral ball
+  REJECTED   ///< no valid position was found near it
+};
+
+/// margins of `Region_confinement` (see `relax_bubbles()` for their meaning)
+struct Confinement_settings
+{
+  double ball_margin = 0.02;   // centres stay beyond (1 + margin) times a ball's radius
+  double max_ball_ratio = 3.;  // wider balls (over the local surface radius) are not protected
+  double offset_ratio = 0.5;   // a bubble put back lands this share of its radius off the surface
+};
+
+/*
+Keeps the bubbles of one region inside it and away from its surfaces.
+
+The constraint surfaces of region `r` are the triangles of the patches that
+have `r` on one side (its boundary) or on both sides (surfaces inside it, such
+as fault tips): a bubble may cross none of them. On top of that a bubble
+centre must stay outside the diametral ball of every constraint triangle (the
+ball through its corners centred in its plane) and of every constraint edge
+(the ball on the edge as diameter), enlarged by `1 + ball_margin`: an input
+triangle whose diametral ball holds no other point is a Delaunay facet, so the
+tetrahedralization keeps it whole. Balls wider than `max_ball_ratio` times the
+local surface-bubble radius (those of needle and cap triangles) are not
+protected: keeping bubbles out of them would leave holes much larger than the
+mesh size; the surface recovery splits such triangles instead.
+
+The checks are the expensive part of a step, so a bubble carries a clearance:
+the radius of a ball around a checked position that meets no surface and no
+protected ball. Moves that stay inside it need no check. All queries are
+`const` and may run from several threads once the object is built.
+*/
+template <class GeomTraits>
+class Region_confinement
+{
+public:
+  typedef GeomTraits                                  K;
+  typedef typename K::Point_3                         Point_3;
+  typedef typename K::Vector_3                        Vector_3;
+  typedef typename K::Segment_3                       Segment_3;
+  typedef typename K::Ray_3                           Ray_3;
+  typedef typename K::Triangle_3                      Triangle_3;
+  typedef std::vector<Triangle_3>                     Triangles;
+  typedef typename Triangles::const_iterator          Triangle_iterator;
+  typedef CGAL::AABB_triangle_primitive<K, Triangle_iterator> Primitive;
+  typedef CGAL::AABB_traits<K, Primitive>             Traits;
+  typedef CGAL::AABB_tree<Traits>                     Tree;
+
+  typedef Confinement_settings Settings;
+
+  /// `point_radius[v]`: radius of the surface bubble at model point `v` (0 if none)
+  Region_confinement(const Geological_model_3<K>& model, std::size_t region,
+                     const std::vector<double>& point_radius, const Settings& settings)
+    : region_(region), settings_(settings)
+  {
+    collect_triangles(model);
+    if(triangles_.empty()) return;
+    tree_.reset(new Tree(triangles_.begin(), triangles_.end()));
+    // build now: a lazy build would race when threads query the tree
+    tree_->build();
+    tree_->accelerate_distance_queries();
+    collect_balls(model, point_radius);
+    build_ball_grid();
+  }
+
+  bool has_surfaces() const { return !triangles_.empty(); }
+  std::size_t number_of_triangles() const { return triangles_.size(); }
+  std::size_t number_of_protected_balls() const { return balls_.size(); }
+  const std::array<double, 6>& bbox() const { return bbox_; }
+
+  /// a typical surface-bubble radius on the region's surfaces (the median)
+  double typical_surface_radius() const { return typical_radius_; }
+
+  /// inside the region by ray parity over its boundary, three rays voting
+  /// (a ray through an edge or vertex may miscount; two rays rarely both do)
+  bool is_inside(double x, double y, double z) const
+  {
+    if(!tree_) return false;
+    if(x < bbox_[0] || y < bbox_[1] || z < bbox_[2] || x > bbox_[3] || y > bbox_[4] || z > bbox_[5])
+      return false;
+    static const double dirs[3][3] = {{0.5773502691896257, 0.5773502691896258, 0.5773502691896259},
+                                      {-0.3141592653589793, 0.8164965809277261, -0.4841229182759271},
+                                      {0.7071067811865476, -0.1732050807568877, -0.6855654600401044}};
+    int votes = 0;
+    const Point_3 p(x, y, z);
+    for(int d = 0; d < 3; ++d)
+    {
+      std::vector<typename Primitive::Id> hits;
+      tree_->all_intersected_primitives(Ray_3(p, Vector_3(dirs[d][0], dirs[d][1], dirs[d][2])),
+                                        std::back_inserter(hits));
+      std::size_t crossings = 0;
+      for(const auto& id : hits)
+        if(is_boundary_[std::size_t(id - triangles_.begin())]) ++crossings;
+      if(crossings % 2 == 1) ++votes;
+      if(votes == 2 || (d == 1 && votes == 0)) break;
+    }
+    return votes >= 2;
+  }
+
+  /// does the segment `[a,b]` meet a constraint surface?
+  bool crosses(const double a[3], const double b[3]) const
+  {
+    if(!tree_) return false;
+    if(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) return false; // a valid position stays valid
+    return tree_->do_intersect(Segment_3(Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2])));
+  }
+
+  /// the protected ball that holds `p` deepest, or `none`
+  std::size_t deepest_ball(const double p[3]) const
+  {
+    std::size_t best = none;
+    double best_depth = 0.;
+    const Cell_range range = balls_near(p);
+    for(std::uint32_t k = range.first; k < range.second; ++k)
+    {
+      const Ball& b = balls_[ball_index_[k]];
+      const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(d2 < b.radius2)
+      {
+        const double depth = b.radius - std::sqrt(d2);
+        if(best == none || depth > best_depth) { best = ball_index_[k]; best_depth = depth; }
+      }
+    }
+    return best;
+  }
+
+  /// radius of a ball around `p` free of surfaces and protected balls; negative inside a ball
+  double clearance(const double p[3]) const
+  {
+    if(!tree_) return (std::numeric_limits<double>::max)();
+    const double dist = std::sqrt(CGAL::to_double(tree_->squared_distance(Point_3(p[0], p[1], p[2]))));
+    // a protected ball lies within twice its radius of the surfaces (its centre is
+    // at most one radius off its triangle): far from them no ball needs looking at
+    const double far = dist - 2. * largest_ball_radius_;
+    // the cell lists hold every ball within half a cell of the cell: beyond that we know nothing
+    double c = (std::min)(dist, 0.5 * ball_cell_size_);
+    const Cell_range range = balls_near(p);
+    for(std::uint32_t k = range.first; k < range.second; ++k)
+    {
+      const Ball& b = balls_[ball_index_[k]];
+      const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
+      c = (std::min)(c, std::sqrt(dx * dx + dy * dy + dz * dz) - b.radius);
+    }
+    return (std::max)(c, far);
+  }
+
+  /*
+  Checks the move of a bubble of radius `radius` from the valid position
+  `from` to `p`. If `p` lies across a surface it is put back: at the closest
+  surface point, moved inward (off the surface by `offset_ratio * radius`).
+  A position inside protected balls is pushed out of them along their radii.
+  REJECTED when that fails: the caller then keeps `from`. When MOVED,
+  `normal` is the unit normal of the last constraint met, towards the side
+  the bubble may be on (the caller removes the velocity against it).
+  */
+  Confinement_result confine(const double from[3], double p[3], double radius, double normal[3]) const
+  {
+    if(!tree_) return Confinement_result::UNCHANGED;
+    double q[3] = {p[0], p[1], p[2]};
+    if(crosses(from, q))
+    {
+      put_back(from, p, radius, q, normal);
+      bool pushed = false;
+      if(!push_out_of_balls(from, q, pushed, normal)) return Confinement_result::REJECTED;
+      if(pushed && crosses(from, q)) return Confinement_result::REJECTED;
+    }
+    else if(deepest_ball(q) != none)
+    {
+      // out of one ball: the closest point outside it (radially), the projection
+      // that lets a bubble settle against the ball; where balls overlap, that
+      // can bounce a bubble from one to the other for ever, so there it stops
+      // where its path enters the first ball
+      bool pushed = false;
+      double r[3] = {q[0], q[1], q[2]};
+      if(!push_out_of_balls(from, r, pushed, normal, 1) || crosses(from, r))
+      {
+        if(!stop_at_balls(from, q, normal)) return Confinement_result::REJECTED;
+      }
+      else
+        for(int d = 0; d < 3; ++d) q[d] = r[d];
+    }
+    else
+      return Confinement_result::UNCHANGED;
+    p[0] = q[0]; p[1] = q[1]; p[2] = q[2];
+    return Confinement_result::MOVED;
+  }
+
+  /*
+  Makes a start position valid: a bubble outside the region goes to the
+  closest boundary point and inward; then out of the protected balls.
+  REJECTED when it cannot be made valid (the caller removes the bubble).
+  */
+  Confinement_result place(double p[3], double radius) const
+  {
+    if(!tree_) return Confinement_result::REJECTED;
+    bool moved = false;
+    double inside[3] = {p[0], p[1], p[2]};
+    if(!is_inside(p[0], p[1], p[2]))
+    {
+      const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
+      const std::size_t t = std::size_t(cp.second - triangles_.begin());
+      const double s = is_boundary_[t] ? inward_sign_[t] : 1.;
+      const double off = settings_.offset_ratio * radius;
+      for(int d = 0; d < 3; ++d)
+        inside[d] = CGAL::to_double(cp.first[d]) + s * normal_[t][d] * off;
+      if(!is_inside(inside[0], inside[1], inside[2])) return Confinement_result::REJECTED;
+      moved = true;
+    }
+    double q[3] = {inside[0], inside[1], inside[2]};
+    bool pushed = false;
+    double normal[3];
+    if(!push_out_of_balls(inside, q, pushed, normal)) return Confinement_result::REJECTED;
+    if(pushed && crosses(inside, q)) return Confinement_result::REJECTED;
+    if(!moved && !pushed) return Confinement_result::UNCHANGED;
+    p[0] = q[0]; p[1] = q[1]; p[2] = q[2];
+    return Confinement_result::MOVED;
+  }
+
+  /// may a new bubble sit at `p`, reached from the valid position `from` without crossing a surface?
+  bool accepts(const double from[3], const double p[3]) const
+  {
+    if(!tree_) return false;
+    return deepest_ball(p) == none && !crosses(from, p);
+  }
+
+private:
+  static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+  typedef std::pair<std::uint32_t, std::uint32_t> Cell_range;
+
+  struct Ball
+  {
+    double c[3];
+    double radius;  // enlarged by the margin
+    double radius2;
+    std::size_t triangle; // constraint triangle it protects, or none for an edge ball
+  };
+
+  void collect_triangles(const Geological_model_3<K>& model)
+  {
+    bbox_ = {{(std::numeric_limits<double>::max)(), (std::numeric_limits<double>::max)(),
+              (std::numeric_limits<double>::max)(), -(std::numeric_limits<double>::max)(),
+              -(std::numeric_limits<double>::max)(), -(std::numeric_limits<double>::max)()}};
+    for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+    {
+      const auto& patch = model.patch(model.patch_of_triangle(t));
+      const bool pos = patch.positive_region == region_, neg = patch.negative_region == region_;
+      if(!pos && !neg) continue;
+      const auto& tri = model.triangle(t);
+      const Point_3& a = model.point(tri[0]);
+      const Point_3& b = model.point(tri[1]);
+      const Point_3& c = model.point(tri[2]);
+      triangles_.push_back(Triangle_3(a, b, c));
+      model_triangle_.push_back(t);
+      is_boundary_.push_back(pos != neg);
+      // the region lies on the normal's side when it is the positive region
+      inward_sign_.push_back(pos && !neg ? 1. : -1.);
+      const Vector_3 n = CGAL::cross_product(b - a, c - a);
+      const double len = std::sqrt(CGAL::to_double(n.squared_length()));
+      std::array<double, 3> un = {{0., 0., 0.}};
+      if(len > 0.)
+        un = {{CGAL::to_double(n.x()) / len, CGAL::to_double(n.y()) / len, CGAL::to_double(n.z()) / len}};
+      normal_.push_back(un);
+      if(pos != neg)
+        for(const Point_3* q : {&a, &b, &c})
+          for(int d = 0; d < 3; ++d)
+          {
+            bbox_[d] = (std::min)(bbox_[d], CGAL::to_double((*q)[d]));
+            bbox_[d + 3] = (std::max)(bbox_[d + 3], CGAL::to_double((*q)[d]));
+          }
+    }
+  }
+
+  void collect_balls(const Geological_model_3<K>& model, const std::vector<double>& point_radius)
+  {
+    const double grow = 1. + settings_.ball_margin;
+    auto local_radius = [&](std::size_t v, double fallback) {
+      return (v < point_radius.size() && point_radius[v] > 0.) ? point_radius[v] : fallback;
+    };
+    std::vector<double> radii;
+    std::vector<std::pair<std::size_t, std::size_t> > edges;
+    for(std::size_t i = 0; i < triangles_.size(); ++i)
+    {
+      const auto& tri = model.triangle(model_triangle_[i]);
+      const Triangle_3& t = triangles_[i];
+      double longest = 0.;
+      for(int e = 0; e < 3; ++e)
+        longest = (std::max)(longest, std::sqrt(CGAL::to_double(CGAL::squared_distance(t[e], t[(e + 1) % 3]))));
+      double rl = 0.;
+      for(int e = 0; e < 3; ++e)
+      {
+        rl += local_radius(tri[e], 0.5 * longest) / 3.;
+        radii.push_back(local_radius(tri[e], 0.5 * longest));
+        edges.push_back(std::make_pair((std::min)(tri[e], tri[(e + 1) % 3]),
+                                       (std::max)(tri[e], tri[(e + 1) % 3])));
+      }
+      if(CGAL::collinear(t[0], t[1], t[2])) continue;
+      const Point_3 cc = CGAL::circumcenter(t[0], t[1], t[2]);
+      const double R = std::sqrt(CGAL::to_double(CGAL::squared_distance(cc, t[0])));
+      if(R > settings_.max_ball_ratio * rl) continue;
+      add_ball(cc, grow * R, i);
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for(const auto& e : edges)
+    {
+      const Point_3& a = model.point(e.first);
+      const Point_3& b = model.point(e.second);
+      const double half = 0.5 * std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+      const double rl = 0.5 * (local_radius(e.first, half) + local_radius(e.second, half));
+      if(half > settings_.max_ball_ratio * rl || half == 0.) continue;
+      add_ball(CGAL::midpoint(a, b), grow * half, none);
+    }
+    if(!radii.empty())
+    {
+      std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+      typical_radius_ = radii[radii.size() / 2];
+    }
+  }
+
+  void add_ball(const Point_3& c, double radius, std::size_t triangle)
+  {
+    Ball b;
+    for(int d = 0; d < 3; ++d) b.c[d] = CGAL::to_double(c[d]);
+    b.radius = radius;
+    b.radius2 = radius * radius;
+    b.triangle = triangle;
+    balls_.push_back(b);
+  }
+
+  // sparse grid of balls: only the cells near the surfaces exist
+  std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k) const
+  {
+    const std::int64_t lim = (std::int64_t(1) << 21) - 1;
+    auto clamp = [lim](std::int64_t v) { return std::uint64_t((std::min)((std::max)(v, std::int64_t(0)), lim)); };
+    return (clamp(k) << 42) | (clamp(j) << 21) | clamp(i);
+  }
+
+  std::int64_t coordinate(double v, int d) const
+  {
+    const double c = std::floor((v - ball_origin_[d]) / ball_cell_size_);
+    if(!(c > -1e18 && c < 1e18)) return 0;
+    return std::int64_t(c);
+  }
+
+  void build_ball_grid()
+  {
+    double largest = 0.;
+    std::vector<double> rs;
+    for(const Ball& b : balls_) { rs.push_back(b.radius); largest = (std::max)(largest, b.radius); }
+    double h = typical_radius_ > 0. ? 2. * typical_radius_ : 1.;
+    if(!rs.empty())
+    {
+      std::nth_element(rs.begin(), rs.begin() + rs.size() / 2, rs.end());
+      h = 2. * rs[rs.size() / 2];
+    }
+    const double ext = (std::max)({bbox_[3] - bbox_[0], bbox_[4] - bbox_[1], bbox_[5] - bbox_[2], 0.});
+    // 2^21 cells per axis at most
+    h = (std::max)(h, ext / 1.e6);
+    if(!(h > 0.)) h = 1.;
+    ball_cell_size_ = h;
+    largest_ball_radius_ = largest;
+    for(int d = 0; d < 3; ++d) ball_origin_[d] = bbox_[d] - largest - h;
+    std::vector<std::pair<std::uint64_t, std::uint32_t> > entries;
+    const double pad = 0.5 * h; // so that a clearance of half a cell is exact
+    for(std::size_t i = 0; i < balls_.size(); ++i)
+    {
+      const Ball& b = balls_[i];
+      std::int64_t lo[3], hi[3];
+      for(int d = 0; d < 3; ++d)
+      {
+        lo[d] = coordinate(b.c[d] - b.radius - pad, d);
+        hi[d] = coordinate(b.c[d] + b.radius + pad, d);
+      }
+      for(std::int64_t k = lo[2]; k <= hi[2]; ++k)
+        for(std::int64_t j = lo[1]; j <= hi[1]; ++j)
+          for(std::int64_t l = lo[0]; l <= hi[0]; ++l)
+            entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+    }
+    std::sort(entries.begin(), entries.end());
+    ball_index_.resize(entries.size());
+    for(std::size_t e = 0; e < entries.size(); ++e)
+    {
+      ball_index_[e] = entries[e].second;
+      if(e == 0 || entries[e].first != entries[e - 1].first)
+        cells_[entries[e].first] = Cell_range(std::uint32_t(e), std::uint32_t(e));
+      ++cells_[entries[e].first].second;
+    }
+  }
+
+  Cell_range balls_near(const double p[3]) const
+  {
+    const auto it = cells_.find(key(coordinate(p[0], 0), coordinate(p[1], 1), coordinate(p[2], 2)));
+    return it == cells_.end() ? Cell_range(0, 0) : it->second;
+  }
+
+  // p lies across a surface seen from `from`: closest surface point to p, then inward
+  void put_back(const double from[3], const double p[3], double radius, double q[3], double normal[3]) const
+  {
+    const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
+    const std::size_t t = std::size_t(cp.second - triangles_.begin());
+    const double c[3] = {CGAL::to_double(cp.first.x()), CGAL::to_double(cp.first.y()),
+                         CGAL::to_double(cp.first.z())};
+    double s = inward_sign_[t];
+    if(!is_boundary_[t])
+    {
+      // a surface inside the region: go back to the side the bubble came from
+      const double side = (from[0] - c[0]) * normal_[t][0] + (from[1] - c[1]) * normal_[t][1] +
+                          (from[2] - c[2]) * normal_[t][2];
+      s = side >= 0. ? 1. : -1.;
+    }
+    const double off = settings_.offset_ratio * radius;
+    for(int d = 0; d < 3; ++d)
+    {
+      normal[d] = s * normal_[t][d];
+      q[d] = c[d] + normal[d] * off;
+    }
+    if(!crosses(from, q)) return;
+    // near folds the closest point may lie on another sheet: stop short along the path instead
+    double lo = 0., hi = 1.;
+    for(int it = 0; it < 30; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      double m[3];
+      for(int d = 0; d < 3; ++d) m[d] = from[d] + mid * (p[d] - from[d]);
+      if(crosses(from, m)) hi = mid; else lo = mid;
+    }
+    const double len = std::sqrt((p[0] - from[0]) * (p[0] - from[0]) + (p[1] - from[1]) * (p[1] - from[1]) +
+                                 (p[2] - from[2]) * (p[2] - from[2]));
+    const double tt = len > 0. ? (std::max)(0., lo - off / len) : 0.;
+    for(int d = 0; d < 3; ++d)
+    {
+      q[d] = from[d] + tt * (p[d] - from[d]);
+      normal[d] = len > 0. ? (from[d] - p[d]) / len : 0.;
+    }
+  }
+
+  // moves q back along the path from `from` (outside every ball) to where it
+  // first meets a protected ball; false if it cannot leave `from`
+  bool stop_at_balls(const double from[3], double q[3], double normal[3]) const
+  {
+    const double d[3] = {q[0] - from[0], q[1] - from[1], q[2] - from[2]};
+    const double a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if(!(a > 0.)) return false;
+    double t_min = 1.;
+    std::size_t hit = none;
+    // the path is short against a cell, so the balls near its end hold all it meets
+    const Cell_range range = balls_near(q);
+    for(std::uint32_t k = range.first; k < range.second; ++k)
+    {
+      const Ball& ball = balls_[ball_index_[k]];
+      const double f[3] = {from[0] - ball.c[0], from[1] - ball.c[1], from[2] - ball.c[2]};
+      const double c = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - ball.radius2;
+      if(c <= 0.) continue; // `from` on or in this ball: only rounding, it was checked
+      const double b = d[0] * f[0] + d[1] * f[1] + d[2] * f[2];
+      const double disc = b * b - a * c;
+      if(b >= 0. || disc < 0.) continue; // moving away, or missing it
+      const double t = (-b - std::sqrt(disc)) / a;
+      if(t < t_min) { t_min = t; hit = ball_index_[k]; }
+    }
+    if(hit == none) return false;
+    // a hair short of the ball, so that rounding cannot put q inside it
+    const double t = (std::max)(0., t_min * (1. - 1e-9) - 1e-12);
+    for(int dd = 0; dd < 3; ++dd) q[dd] = from[dd] + t * d[dd];
+    const Ball& ball = balls_[hit];
+    const double n[3] = {q[0] - ball.c[0], q[1] - ball.c[1], q[2] - ball.c[2]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for(int dd = 0; dd < 3; ++dd) normal[dd] = len > 0. ? n[dd] / len : 0.;
+    if(deepest_ball(q) != none)
+    {
+      for(int dd = 0; dd < 3; ++dd) q[dd] = from[dd];
+      return true;
+    }
+    // slide: the rest of the move, less its part into the ball, along the tangent
+    // plane (outside the ball, which is convex); kept if it meets nothing else
+    double rest[3];
+    double into = 0.;
+    for(int dd = 0; dd < 3; ++dd)
+    {
+      rest[dd] = (1. - t) * d[dd];
+      into += rest[dd] * normal[dd];
+    }
+    if(into < 0.)
+    {
+      double slid[3];
+      for(int dd = 0; dd < 3; ++dd) slid[dd] = q[dd] + rest[dd] - into * normal[dd];
+      if(deepest_ball(slid) == none && !crosses(from, slid))
+        for(int dd = 0; dd < 3; ++dd) q[dd] = slid[dd];
+    }
+    return true;
+  }
+
+  // pushes q radially out of the protected balls that hold it; false if it stays in one
+  bool push_out_of_balls(const double from[3], double q[3], bool& pushed, double normal[3], int pushes = 8) const
+  {
+    pushed = false;
+    for(int it = 0; it < pushes; ++it)
+    {
+      const std::size_t b = deepest_ball(q);
+      if(b == none) return true;
+      const Ball& ball = balls_[b];
+      double dir[3] = {q[0] - ball.c[0], q[1] - ball.c[1], q[2] - ball.c[2]};
+      double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+      if(len < 1e-9 * ball.radius)
+      {
+        // at the centre: leave towards where the bubble came from
+        for(int d = 0; d < 3; ++d) dir[d] = from[d] - ball.c[d];
+        len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        if(len < 1e-9 * ball.radius) return false;
+      }
+      const double target = ball.radius * (1. + 1e-6);
+      for(int d = 0; d < 3; ++d)
+      {
+        normal[d] = dir[d] / len;
+        q[d] = ball.c[d] + dir[d] * (target / len);
+      }
+      pushed = true;
+    }
+    return deepest_ball(q) == none;
+  }
+
+  std::size_t region_;
+  Settings settings_;
+  Triangles triangles_;
+  std::vector<std::size_t> model_triangle_;
+  std::vector<bool> is_boundary_;
+  std::vector<double> inward_sign_;
+  std::vector<std::array<double, 3> > normal_;
+  std::array<double, 6> bbox_;
+  std::unique_ptr<Tree> tree_;
+  std::vector<Ball> balls_;
+  double typical_radius_ = 0.;
+  double ball_cell_size_ = 1.;
+  double largest_ball_radius_ = 0.;
+  double ball_origin_[3] = {0., 0., 0.};
+  std::vector<std::uint32_t> ball_index_;
+  std::unordered_map<std::uint64_t, Cell_range> cells_;
+};
+
+} // namespace internal
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_INTERNAL_CONFINE_TO_REGION_H

@@ -1,0 +1,128 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_INTERNAL_DYNAMICS_PARAMETERS_H
+#define CGAL_BUBBLE_MESH_3_INTERNAL_DYNAMICS_PARAMETERS_H
+
+// Named parameters of the bubble dynamics (relax_bubbles(),
+// control_bubble_population()). Chain them with the two-argument form:
+// `parameters::time_step(0.05, parameters::damping(3.))`, or append to a CGAL
+// chain: `parameters::mass(2., CGAL::parameters::number_of_iterations(500))`.
+// CGAL tags reused: `number_of_iterations` (step budget of one relaxation
+// round) and `visitor` (progress figures).
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+namespace internal_np {
+enum force_law_t { force_law };
+enum mass_t { mass };
+enum damping_t { damping };
+enum stiffness_t { stiffness };
+enum time_step_t { time_step };
+enum displacement_tolerance_t { displacement_tolerance };
+enum round_displacement_tolerance_t { round_displacement_tolerance };
+enum min_overlap_ratio_t { min_overlap_ratio };
+enum max_overlap_ratio_t { max_overlap_ratio };
+enum number_of_population_rounds_t { number_of_population_rounds };
+enum population_tolerance_t { population_tolerance };
+enum insertion_clearance_t { insertion_clearance };
+enum neighbor_skin_t { neighbor_skin };
+enum max_step_ratio_t { max_step_ratio };
+enum radius_update_ratio_t { radius_update_ratio };
+enum diametral_ball_margin_t { diametral_ball_margin };
+enum max_protected_ball_ratio_t { max_protected_ball_ratio };
+enum surface_offset_ratio_t { surface_offset_ratio };
+enum dynamics_threads_t { dynamics_threads };
+} // namespace internal_np
+
+namespace parameters {
+
+using CGAL::parameters::default_values;
+using CGAL::parameters::number_of_iterations;
+using CGAL::parameters::visitor;
+
+// One-argument form starts a chain, two-argument form appends to one.
+#define CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(TYPE, NAME, TAG)                                 \
+  inline CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t>                           \
+  NAME(const TYPE& value)                                                                      \
+  {                                                                                            \
+    return CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t>(value);                 \
+  }                                                                                            \
+  template <class T, class Tag, class Base>                                                    \
+  CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t,                                  \
+                                  CGAL::Named_function_parameters<T, Tag, Base> >              \
+  NAME(const TYPE& value, const CGAL::Named_function_parameters<T, Tag, Base>& np)             \
+  {                                                                                            \
+    return CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t,                         \
+                                           CGAL::Named_function_parameters<T, Tag, Base> >(    \
+      value, np);                                                                              \
+  }
+
+/// mass m of a free bubble (default 1)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, mass, mass)
+/// viscous damping c (default 2 sqrt(m k): critical for one bubble bound by one spring)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, damping, damping)
+/// stiffness k of the default force law (default 1)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, stiffness, stiffness)
+/// integration time step (default 0.2 sqrt(m/k))
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, time_step, time_step)
+/// convergence: largest displacement in one step over the local radius (default 1e-3)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, displacement_tolerance, displacement_tolerance)
+/// convergence of the relaxations between population passes, looser since more passes follow (default 1e-2)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, round_displacement_tolerance, round_displacement_tolerance)
+/// lower bound of the overlap ratio of interior bubbles (default 10)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, min_overlap_ratio, min_overlap_ratio)
+/// upper bound of the overlap ratio of interior bubbles (default 14)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_overlap_ratio, max_overlap_ratio)
+/// most population-control rounds, each followed by a relaxation (default 12; 0 = none)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(std::size_t, number_of_population_rounds, number_of_population_rounds)
+/// the population has settled when a round changes at most this share of it (default 0.002)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, population_tolerance, population_tolerance)
+/// least normalised distance l/(r_new + r_j) of an inserted bubble to the others (default 0.85)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, insertion_clearance, insertion_clearance)
+/// extra reach of the neighbour lists, over r_i + r_j (default 0.3)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, neighbor_skin, neighbor_skin)
+/// longest move of a bubble in one step, over its radius (default 0.25)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_step_ratio, max_step_ratio)
+/// a bubble's radius is read again from the sizing field after it moved this share of it (default 0.05)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, radius_update_ratio, radius_update_ratio)
+/// bubble centres stay farther than (1 + margin) times a diametral ball's radius from its centre (default 0.02)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, diametral_ball_margin, diametral_ball_margin)
+/// diametral balls wider than this times the local surface-bubble radius are not protected (default 3)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_protected_ball_ratio, max_protected_ball_ratio)
+/// a bubble put back inside its region lands this share of its radius off the surface (default 0.5)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, surface_offset_ratio, surface_offset_ratio)
+/// number of threads of the dynamics (default 0: all cores)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(std::size_t, number_of_threads, dynamics_threads)
+
+#undef CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER
+
+/// the pair force law, a model of `BubbleForceLaw` (default `Cubic_bubble_force(stiffness)`)
+template <class ForceLaw>
+CGAL::Named_function_parameters<ForceLaw, internal_np::force_law_t>
+force_law(const ForceLaw& law)
+{
+  return CGAL::Named_function_parameters<ForceLaw, internal_np::force_law_t>(law);
+}
+
+template <class ForceLaw, class T, class Tag, class Base>
+CGAL::Named_function_parameters<ForceLaw, internal_np::force_law_t,
+                                CGAL::Named_function_parameters<T, Tag, Base> >
+force_law(const ForceLaw& law, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return CGAL::Named_function_parameters<ForceLaw, internal_np::force_law_t,
+                                         CGAL::Named_function_parameters<T, Tag, Base> >(law, np);
+}
+
+} // namespace parameters
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_INTERNAL_DYNAMICS_PARAMETERS_H

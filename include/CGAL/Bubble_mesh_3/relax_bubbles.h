@@ -1,0 +1,784 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_RELAX_BUBBLES_H
+#define CGAL_BUBBLE_MESH_3_RELAX_BUBBLES_H
+
+#include <CGAL/Bubble_mesh_3/Bubble.h>
+#include <CGAL/Bubble_mesh_3/Cubic_bubble_force.h>
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/control_bubble_population.h>
+#include <CGAL/Bubble_mesh_3/internal/Neighbor_grid.h>
+#include <CGAL/Bubble_mesh_3/internal/confine_to_region.h>
+#include <CGAL/Bubble_mesh_3/internal/dynamics_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+The figures a visitor of `relax_bubbles()` receives, after every step and at
+the end of every population round of a region.
+*/
+struct Relaxation_progress
+{
+  std::size_t region = 0;        ///< the region relaxing
+  std::size_t round = 0;         ///< population round (0: the first relaxation)
+  std::size_t step = 0;          ///< step within the round
+  std::size_t total_steps = 0;   ///< steps of this region so far
+  double kinetic_energy = 0.;    ///< \f$ \frac{m}{2} \sum v_i^2 \f$ over the free bubbles
+  double max_displacement = 0.;  ///< largest move in the last step over the bubble's radius
+  std::size_t added = 0;         ///< bubbles inserted by this round's population control
+  std::size_t removed = 0;       ///< bubbles deleted by this round's population control
+  std::size_t population = 0;    ///< interior bubbles of the region
+  bool end_of_round = false;     ///< true for the call that closes a round
+};
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+What `relax_bubbles()` did in one region.
+*/
+struct Region_relaxation_report
+{
+  std::size_t region = 0;
+  std::size_t input_population = 0;   ///< interior bubbles given
+  std::size_t population = 0;         ///< interior bubbles returned
+  std::size_t surface_bubbles = 0;    ///< fixed bubbles on the region's surfaces
+  std::size_t steps = 0;              ///< integration steps, all rounds
+  double bubble_steps = 0.;           ///< sum over steps of the interior population
+  std::size_t rounds = 0;             ///< population rounds done
+  std::size_t added = 0;              ///< inserted by population control
+  std::size_t removed = 0;            ///< deleted by population control
+  std::size_t rejected = 0;           ///< dropped: no valid start position inside the region
+  bool converged = false;             ///< the last relaxation met the displacement tolerance
+  bool population_settled = false;    ///< the last population pass changed (almost) nothing
+  bool stopped_cycling = false;       ///< population control stopped by the add/delete-cycle guard
+  bool interrupted = false;           ///< the visitor asked to stop
+  double kinetic_energy = 0.;         ///< at the end
+  double max_displacement = 0.;       ///< of the last step, over the local radius
+  std::size_t below = 0, inside = 0, above = 0; ///< final overlap ratios against the bounds
+  std::vector<std::size_t> overlap_histogram;   ///< bin k counts k <= alpha < k+1; the last bin is open
+  double seconds = 0.;
+};
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+What `relax_bubbles()` did: one entry per region that had interior bubbles,
+and the totals.
+*/
+struct Relaxation_report
+{
+  std::vector<Region_relaxation_report> regions;
+  std::size_t steps = 0;          ///< sum over regions
+  double bubble_steps = 0.;       ///< sum over regions
+  std::size_t population = 0, added = 0, removed = 0, rejected = 0;
+  std::size_t below = 0, inside = 0, above = 0;
+  std::vector<std::size_t> overlap_histogram;
+  double seconds = 0.;            ///< wall-clock time of the whole call
+
+  /// every region's last relaxation met the tolerance
+  bool converged() const
+  {
+    for(const Region_relaxation_report& r : regions)
+      if(!r.converged) return false;
+    return true;
+  }
+
+  /// share of the interior bubbles whose overlap ratio lies inside the bounds
+  double share_inside_bounds() const
+  {
+    const std::size_t n = below + inside + above;
+    return n == 0 ? 1. : double(inside) / double(n);
+  }
+};
+
+namespace internal {
+
+struct Default_relaxation_visitor
+{
+  bool operator()(const Relaxation_progress&) const { return true; }
+};
+
+// visitors may return void or bool (false: stop)
+template <class Visitor>
+bool call_visitor(Visitor& visitor, const Relaxation_progress& p)
+{
+  if constexpr(std::is_void<decltype(visitor(p))>::value)
+  {
+    visitor(p);
+    return true;
+  }
+  else
+    return bool(visitor(p));
+}
+
+constexpr std::size_t overlap_histogram_bins = 31;
+
+/*
+Damped dynamics of one region's free bubbles:  m x'' + c x' = F(x),
+Heun's predictor-corrector (explicit Euler predictor, trapezoidal corrector):
+  a0 = (F(x) - c v)/m,  x* = x + dt v,  v* = v + dt a0,
+  a1 = (F(x*) - c v*)/m,  x' = x + dt (v + v*)/2,  v' = v + dt (a0 + a1)/2.
+F is summed over Verlet neighbour lists (pairs closer than (cutoff + skin)
+times the sum of radii at the last rebuild), rebuilt when a bubble has moved,
+or its radius grown, by more than the skin can absorb. Each bubble sums its
+own list in a fixed order, so forces do not depend on the thread count.
+*/
+template <class ConcurrencyTag, class K, class ForceLaw, class SizingField>
+class Relaxer
+{
+public:
+  struct Figures
+  {
+    double kinetic_energy = 0.;
+    double max_displacement = 0.;
+  };
+
+  Relaxer(Bubble_system<K>& s, const ForceLaw& law, const SizingField& sizing, const Dynamics_settings& st)
+    : s_(s), law_(law), sizing_(sizing), st_(st)
+  {}
+
+  std::size_t list_rebuilds() const { return rebuilds_; }
+
+  /// to call after the population changed
+  void reset()
+  {
+    const std::size_t n = s_.n_free, total = s_.size();
+    px_.assign(s_.x.begin(), s_.x.end());
+    py_.assign(s_.y.begin(), s_.y.end());
+    pz_.assign(s_.z.begin(), s_.z.end());
+    pvx_.assign(n, 0.); pvy_.assign(n, 0.); pvz_.assign(n, 0.);
+    f0x_.assign(n, 0.); f0y_.assign(n, 0.); f0z_.assign(n, 0.);
+    f1x_.assign(n, 0.); f1y_.assign(n, 0.); f1z_.assign(n, 0.);
+    ke_.assign(n, 0.); disp_.assign(n, 0.);
+    follow_sizing_ = true;
+    CGAL_USE(total);
+    rebuild_lists();
+    forces(s_.x.data(), s_.y.data(), s_.z.data(), f0x_.data(), f0y_.data(), f0z_.data());
+  }
+
+  Figures step()
+  {
+    const std::size_t n = s_.n_free;
+    const double dt = st_.time_step;
+    // predictor
+    for_each_block<ConcurrencyTag>(n, 512, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
+      {
+        const double inv_m = inv_mass_[i], c = damping_[i];
+        double dx = dt * s_.vx[i], dy = dt * s_.vy[i], dz = dt * s_.vz[i];
+        const double len = std::sqrt(dx * dx + dy * dy + dz * dz), lim = st_.max_step * s_.r[i];
+        if(len > lim) { const double k = lim / len; dx *= k; dy *= k; dz *= k; }
+        px_[i] = s_.x[i] + dx; py_[i] = s_.y[i] + dy; pz_[i] = s_.z[i] + dz;
+        pvx_[i] = s_.vx[i] + dt * (f0x_[i] - c * s_.vx[i]) * inv_m;
+        pvy_[i] = s_.vy[i] + dt * (f0y_[i] - c * s_.vy[i]) * inv_m;
+        pvz_[i] = s_.vz[i] + dt * (f0z_[i] - c * s_.vz[i]) * inv_m;
+      }
+    });
+    if(!lists_valid(px_.data(), py_.data(), pz_.data())) rebuild_lists();
+    forces(px_.data(), py_.data(), pz_.data(), f1x_.data(), f1y_.data(), f1z_.data());
+    // corrector, confinement, radii
+    const Region_confinement<K>& conf = *s_.confinement;
+    for_each_block<ConcurrencyTag>(n, 512, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
+      {
+        const double ri = s_.r[i], inv_m = inv_mass_[i], c = damping_[i];
+        double dx = 0.5 * dt * (s_.vx[i] + pvx_[i]);
+        double dy = 0.5 * dt * (s_.vy[i] + pvy_[i]);
+        double dz = 0.5 * dt * (s_.vz[i] + pvz_[i]);
+        double vx = s_.vx[i] + 0.5 * dt * inv_m * (f0x_[i] - c * s_.vx[i] + f1x_[i] - c * pvx_[i]);
+        double vy = s_.vy[i] + 0.5 * dt * inv_m * (f0y_[i] - c * s_.vy[i] + f1y_[i] - c * pvy_[i]);
+        double vz = s_.vz[i] + 0.5 * dt * inv_m * (f0z_[i] - c * s_.vz[i] + f1z_[i] - c * pvz_[i]);
+        const double len = std::sqrt(dx * dx + dy * dy + dz * dz), lim = st_.max_step * ri;
+        if(len > lim)
+        {
+          // a safety limit for crowded starts; inactive near rest
+          const double k = lim / len;
+          dx *= k; dy *= k; dz *= k; vx *= k; vy *= k; vz *= k;
+        }
+        const double from[3] = {s_.x[i], s_.y[i], s_.z[i]};
+        double p[3] = {from[0] + dx, from[1] + dy, from[2] + dz};
+        const double qx = p[0] - s_.cx[i], qy = p[1] - s_.cy[i], qz = p[2] - s_.cz[i];
+        if(qx * qx + qy * qy + qz * qz >= s_.clearance[i] * s_.clearance[i] || s_.clearance[i] <= 0.)
+        {
+          double nrm[3] = {0., 0., 0.};
+          const Confinement_result res = conf.confine(from, p, ri, nrm);
+          if(res == Confinement_result::REJECTED)
+          {
+            p[0] = from[0]; p[1] = from[1]; p[2] = from[2];
+            vx = vy = vz = 0.;
+          }
+          else
+          {
+            if(res == Confinement_result::MOVED)
+            {
+              // an inelastic contact: drop the velocity into the constraint, keep the
+              // rest so that a bubble pressed on a wall still slides along it, and
+              // only as much of it as the bubble really moved (a bubble stopped
+              // at once must not gather speed it does not use)
+              const double vn = vx * nrm[0] + vy * nrm[1] + vz * nrm[2];
+              if(vn < 0.) { vx -= vn * nrm[0]; vy -= vn * nrm[1]; vz -= vn * nrm[2]; }
+              const double went = std::sqrt((p[0] - from[0]) * (p[0] - from[0]) + (p[1] - from[1]) * (p[1] - from[1]) +
+                                            (p[2] - from[2]) * (p[2] - from[2]));
+              const double frac = len > 0. ? (std::min)(1., went / (std::min)(len, lim)) : 0.;
+              vx *= frac; vy *= frac; vz *= frac;
+            }
+            s_.cx[i] = p[0]; s_.cy[i] = p[1]; s_.cz[i] = p[2];
+            s_.clearance[i] = conf.clearance(p);
+          }
+        }
+        const double mx = p[0] - from[0], my = p[1] - from[1], mz = p[2] - from[2];
+        disp_[i] = std::sqrt(mx * mx + my * my + mz * mz) / ri;
+        s_.x[i] = p[0]; s_.y[i] = p[1]; s_.z[i] = p[2];
+        s_.vx[i] = vx; s_.vy[i] = vy; s_.vz[i] = vz;
+        ke_[i] = vx * vx + vy * vy + vz * vz;
+        // radii follow the sizing field; it varies on the scale of the mesh size, so
+        // reading it again after a small share of the radius is enough
+        const double ux = p[0] - s_.sx[i], uy = p[1] - s_.sy[i], uz = p[2] - s_.sz[i];
+        const double ru = st_.radius_update * ri;
+        if(follow_sizing_ && ux * ux + uy * uy + uz * uz > ru * ru)
+        {
+          const double rn = sizing_at<K>(sizing_, p[0], p[1], p[2], s_.region);
+          if(rn > 0.) s_.r[i] = rn;
+          s_.sx[i] = p[0]; s_.sy[i] = p[1]; s_.sz[i] = p[2];
+        }
+      }
+    });
+    const std::pair<double, double> sm =
+      deterministic_sum_and_max<ConcurrencyTag>(n, [&](std::size_t i) { return std::make_pair(ke_[i], disp_[i]); });
+    if(!lists_valid(s_.x.data(), s_.y.data(), s_.z.data())) rebuild_lists();
+    forces(s_.x.data(), s_.y.data(), s_.z.data(), f0x_.data(), f0y_.data(), f0z_.data());
+    // Radii are held once the motion is small: where the sizing field jumps (a
+    // surface bubble entering or leaving the weight-point range) a bubble moving
+    // across the jump would otherwise swing between two radii for ever.
+    if(sm.second < 10. * st_.tolerance) follow_sizing_ = false;
+    Figures f;
+    f.kinetic_energy = 0.5 * st_.mass * sm.first;
+    f.max_displacement = sm.second;
+    return f;
+  }
+
+private:
+  void forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ) const
+  {
+    const double cutoff = law_.cutoff();
+    const double* R = s_.r.data();
+    const std::uint32_t* nb = nbr_.data();
+    const std::size_t* off = offset_.data();
+    for_each_block<ConcurrencyTag>(s_.n_free, 256, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
+      {
+        const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
+        double fx = 0., fy = 0., fz = 0.;
+        for(std::size_t k = off[i]; k < off[i + 1]; ++k)
+        {
+          const std::size_t j = nb[k];
+          const double dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
+          const double sum = ri + R[j], cut = cutoff * sum;
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          // out of reach: no division, no square root (the lists are short, so this is rare)
+          if(d2 >= cut * cut) continue;
+          if(d2 > 1e-24 * sum * sum)
+          {
+            const double l = std::sqrt(d2);
+            // f(w) (r_i + r_j) / l, the pair force over the distance
+            const double mag = law_(l / sum) * sum / l;
+            fx += mag * dx; fy += mag * dy; fz += mag * dz;
+          }
+          else
+            // coincident centres: part them along x, by index, so that the result is reproducible
+            fx += (i < j ? -1. : 1.) * law_(0.) * sum;
+        }
+        FX[i] = fx; FY[i] = fy; FZ[i] = fz;
+      }
+    });
+  }
+
+  // still valid while each bubble moved, plus cutoff times its radius growth, less than skin times its radius
+  bool lists_valid(const double* X, const double* Y, const double* Z) const
+  {
+    const double cutoff = law_.cutoff();
+    const std::pair<double, double> sm = deterministic_sum_and_max<ConcurrencyTag>(s_.n_free, [&](std::size_t i) {
+      const double dx = X[i] - rx_[i], dy = Y[i] - ry_[i], dz = Z[i] - rz_[i];
+      const double grow = (std::max)(0., s_.r[i] - rr_[i]);
+      const double slack = std::sqrt(dx * dx + dy * dy + dz * dz) + cutoff * grow;
+      return std::make_pair(0., slack / (st_.skin * rr_[i]));
+    });
+    return sm.second < 1.;
+  }
+
+  void rebuild_lists()
+  {
+    ++rebuilds_;
+    const std::size_t n = s_.n_free;
+    const double reach = law_.cutoff() + st_.skin;
+    const double r_max = s_.max_radius();
+    s_.fill_grid(grid_, reach * 2. * r_max);
+    rx_.assign(s_.x.begin(), s_.x.begin() + n);
+    ry_.assign(s_.y.begin(), s_.y.begin() + n);
+    rz_.assign(s_.z.begin(), s_.z.begin() + n);
+    rr_.assign(s_.r.begin(), s_.r.begin() + n);
+    const std::size_t block = 1024, nb = (n + block - 1) / block;
+    std::vector<std::vector<std::uint32_t> > lists(nb);
+    std::vector<std::size_t> counts(n, 0);
+    for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
+      for(std::size_t bk = b0; bk < b1; ++bk)
+      {
+        std::vector<std::uint32_t>& out = lists[bk];
+        out.clear();
+        for(std::size_t i = bk * block; i < (std::min)(n, (bk + 1) * block); ++i)
+        {
+          const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
+          const std::size_t before = out.size();
+          grid_.for_each_near(xi, yi, zi, reach * (ri + r_max), [&](std::size_t j) {
+            if(j == i) return;
+            const double dx = s_.x[j] - xi, dy = s_.y[j] - yi, dz = s_.z[j] - zi;
+            const double lim = reach * (ri + s_.r[j]);
+            if(dx * dx + dy * dy + dz * dz < lim * lim) out.push_back(std::uint32_t(j));
+          });
+          counts[i] = out.size() - before;
+        }
+      }
+    });
+    offset_.assign(n + 1, 0);
+    for(std::size_t i = 0; i < n; ++i) offset_[i + 1] = offset_[i] + counts[i];
+    nbr_.resize(offset_[n]);
+    for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
+      for(std::size_t bk = b0; bk < b1; ++bk)
+        if(!lists[bk].empty())
+          std::copy(lists[bk].begin(), lists[bk].end(), nbr_.begin() + offset_[bk * block]);
+    });
+    scale_masses();
+  }
+
+  /*
+  Mass scaling, as in dynamic relaxation: the explicit step is stable while
+  dt * omega stays under about 1, omega^2 <= 2 S_i / m_i by Gershgorin's bound,
+  S_i being the sum over the neighbours of the pair stiffness (the larger of
+  |dF/dl| = |f'(w)| along the pair and F/l = f(w)/w across it). A bubble so
+  crowded that dt * omega would pass `stability` gets a heavier mass, and a
+  damping grown with sqrt(m_i) (same damping ratio). Rest states are the
+  same; only crowded transients are slowed. In a packing at rest S_i is about
+  17k, and with the default step no bubble is scaled.
+  */
+  void scale_masses()
+  {
+    const std::size_t n = s_.n_free;
+    inv_mass_.resize(n);
+    damping_.resize(n);
+    const double cutoff = law_.cutoff(), h = 1e-4, stability = 0.8;
+    const double dt2 = st_.time_step * st_.time_step;
+    for_each_block<ConcurrencyTag>(n, 256, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
+      {
+        double stiff = 0.;
+        for(std::size_t k = offset_[i]; k < offset_[i + 1]; ++k)
+        {
+          const std::size_t j = nbr_[k];
+          const double dx = s_.x[i] - s_.x[j], dy = s_.y[i] - s_.y[j], dz = s_.z[i] - s_.z[j];
+          const double w = std::sqrt(dx * dx + dy * dy + dz * dz) / (s_.r[i] + s_.r[j]);
+          if(w >= cutoff) continue;
+          const double slope = std::abs(law_(w + h) - law_((std::max)(0., w - h))) / (w + h - (std::max)(0., w - h));
+          stiff += (std::max)(slope, w > h ? std::abs(law_(w)) / w : std::abs(law_(h)) / h);
+        }
+        const double m = (std::max)(st_.mass, 2. * stiff * dt2 / (stability * stability));
+        inv_mass_[i] = 1. / m;
+        damping_[i] = st_.damping * std::sqrt(m / st_.mass);
+      }
+    });
+  }
+
+  Bubble_system<K>& s_;
+  ForceLaw law_;
+  const SizingField& sizing_;
+  Dynamics_settings st_;
+  Neighbor_grid grid_;
+  std::vector<double> px_, py_, pz_, pvx_, pvy_, pvz_;   // predicted state (px_ also holds the fixed bubbles)
+  std::vector<double> f0x_, f0y_, f0z_, f1x_, f1y_, f1z_;
+  std::vector<double> ke_, disp_;
+  std::vector<double> rx_, ry_, rz_, rr_;                 // positions and radii at the last list rebuild
+  std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
+  std::vector<std::size_t> offset_;
+  std::vector<std::uint32_t> nbr_;
+  std::size_t rebuilds_ = 0;
+  bool follow_sizing_ = true;
+};
+
+// serialises visitor calls coming from regions relaxing at the same time
+template <class Visitor>
+struct Shared_visitor
+{
+  Visitor& visitor;
+  std::mutex mutex;
+  std::atomic<bool> stop{false};
+  explicit Shared_visitor(Visitor& v) : visitor(v) {}
+  bool operator()(const Relaxation_progress& p)
+  {
+    if(stop.load()) return false;
+    std::lock_guard<std::mutex> lock(mutex);
+    if(!call_visitor(visitor, p)) stop.store(true);
+    return !stop.load();
+  }
+};
+
+template <class ConcurrencyTag, class K>
+void tally_overlaps(const Bubble_system<K>& s, const Dynamics_settings& st, Region_relaxation_report& rep)
+{
+  rep.overlap_histogram.assign(overlap_histogram_bins, 0);
+  rep.below = rep.inside = rep.above = 0;
+  if(s.n_free == 0) return;
+  const std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s);
+  for(double a : alpha)
+  {
+    if(a < st.min_overlap) ++rep.below;
+    else if(a > st.max_overlap) ++rep.above;
+    else ++rep.inside;
+    const std::size_t bin = a <= 0. ? 0 : (std::min)(std::size_t(a), overlap_histogram_bins - 1);
+    ++rep.overlap_histogram[bin];
+  }
+}
+
+// relaxation and population control of one region
+template <class ConcurrencyTag, class K, class ForceLaw, class SizingField, class Visitor>
+Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, const SizingField& sizing,
+                                      const Dynamics_settings& st, Shared_visitor<Visitor>& visitor)
+{
+  CGAL::Real_timer timer;
+  timer.start();
+  Region_relaxation_report rep;
+  rep.region = s.region;
+  rep.input_population = s.input_population;
+  rep.rejected = s.rejected;
+  rep.surface_bubbles = s.size() - s.n_free;
+  const double sort_cell = 2. * s.max_radius();
+  s.sort_free_spatially(sort_cell);
+  Relaxer<ConcurrencyTag, K, ForceLaw, SizingField> relaxer(s, law, sizing, st);
+
+  auto relax = [&](std::size_t round, const Population_change& change, double tolerance) {
+    relaxer.reset();
+    Relaxation_progress p;
+    p.region = s.region;
+    p.round = round;
+    p.added = change.added;
+    p.removed = change.removed;
+    p.population = s.n_free;
+    rep.converged = false;
+    for(std::size_t k = 1; k <= st.step_budget && s.n_free > 0; ++k)
+    {
+      const auto f = relaxer.step();
+      ++rep.steps;
+      rep.bubble_steps += double(s.n_free);
+      p.step = k;
+      p.total_steps = rep.steps;
+      p.kinetic_energy = rep.kinetic_energy = f.kinetic_energy;
+      p.max_displacement = rep.max_displacement = f.max_displacement;
+      if(!visitor(p)) { rep.interrupted = true; break; }
+      if(f.max_displacement < tolerance) { rep.converged = true; break; }
+    }
+    if(s.n_free == 0) rep.converged = true;
+    p.end_of_round = true;
+    if(!rep.interrupted && !visitor(p)) rep.interrupted = true;
+  };
+
+  if(st.population_rounds == 0)
+  {
+    relax(0, Population_change(), st.tolerance);
+    rep.population = s.n_free;
+    tally_overlaps<ConcurrencyTag>(s, st, rep);
+    rep.seconds = timer.time();
+    return rep;
+  }
+
+  // The start is often far too crowded (a lattice of edge r): thin it before
+  // moving anything. While the population still changes much the bubbles only
+  // need to be spread out roughly, so those relaxations stop at a looser
+  // tolerance; once it settles, relaxation goes to the full tolerance and
+  // population control checks the result once more.
+  double tolerance = (std::max)(st.tolerance, st.round_tolerance);
+  const Population_change first = population_pass<ConcurrencyTag>(s, sizing, st);
+  rep.added += first.added;
+  rep.removed += first.removed;
+  if(first.added + first.removed > 0) s.sort_free_spatially(sort_cell);
+  relax(0, first, tolerance);
+  std::vector<std::size_t> history;
+  for(std::size_t round = 1; round <= st.population_rounds && !rep.interrupted; ++round)
+  {
+    const Population_change change = population_pass<ConcurrencyTag>(s, sizing, st);
+    rep.rounds = round;
+    rep.added += change.added;
+    rep.removed += change.removed;
+    const std::size_t changes = change.added + change.removed;
+    // one change alone is noise, not a population still moving
+    const bool settled = double(changes) <= (std::max)(1., st.population_tolerance * double(s.n_free));
+    // add/delete cycles: the changes stopped shrinking for two rounds in a row
+    history.push_back(changes);
+    const std::size_t h = history.size();
+    const bool cycling = h >= 3 && history[h - 1] >= history[h - 2] && history[h - 2] >= history[h - 3];
+    const bool strict = tolerance <= st.tolerance;
+    if((settled || cycling) && strict)
+    {
+      rep.population_settled = settled;
+      rep.stopped_cycling = !settled;
+      if(changes > 0) relax(round, change, tolerance);
+      break;
+    }
+    if(settled || cycling)
+    {
+      tolerance = st.tolerance;
+      history.clear();
+    }
+    if(changes > 0) s.sort_free_spatially(sort_cell);
+    if(changes > 0 || settled || cycling) relax(round, change, tolerance);
+  }
+  if(!rep.interrupted && tolerance > st.tolerance) relax(rep.rounds + 1, Population_change(), st.tolerance);
+  rep.population = s.n_free;
+  tally_overlaps<ConcurrencyTag>(s, st, rep);
+  rep.seconds = timer.time();
+  return rep;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+Relaxes the interior bubbles of every region (METHOD.md, stages 3 and 4):
+damped bubble dynamics under a pair force law, confinement to the region, and
+adaptive population control, alternated until the population and the
+positions settle.
+
+<b>Dynamics.</b> Each interior bubble obeys \f$ m\,\ddot x + c\,\dot x = F \f$,
+\f$ F \f$ being the sum over its neighbours \f$ j \f$ (other interior bubbles of
+its region and the surface bubbles on the region's surfaces) of
+\f$ f(w_{ij})\,(r_i + r_j)\,(x_i - x_j)/l_{ij} \f$, with \f$ f \f$ the force
+law (default `Cubic_bubble_force`, the paper's cubic) and
+\f$ w_{ij} = l_{ij}/(r_i + r_j) \f$. The factor \f$ r_i + r_j \f$ makes a pair
+at rest a spring of stiffness \f$ k = -f'(1) \f$ at any model scale, so the
+dynamics, and the tolerance below, are scale-free: units of length do not
+matter. Integration is Heun's predictor-corrector (an explicit Euler
+predictor, a trapezoidal corrector), from zero velocity. Surface bubbles
+never move. Radii follow the sizing field: a bubble's radius is read again
+once it has moved `radius_update_ratio` of it.
+
+<b>Defaults.</b> \f$ m = k = 1 \f$ set the units of time and force, so only
+the ratios below matter. The damping \f$ c = 2\sqrt{mk} \f$ is critical for one
+bubble held by one spring, the original bubble method's choice: in the packing
+a bubble is held by about twelve neighbours (a stiffness near \f$ 4k \f$), so
+its own rattling is damped at half the critical rate and dies within a few
+periods, while the slow collective drift of whole groups of bubbles, which
+critical damping of the rattling would over-damp, still moves at a useful
+pace. The time step \f$ 0.2\sqrt{m/k} \f$ is small against the period
+\f$ 2\pi\sqrt{m/k} \f$ of a single spring and still about a tenth of the
+period of the stiffest mode of a crowded packing (\f$ \omega \approx
+\sqrt{12k/m} \f$), well inside the region where Heun's method damps that
+mode; halving it only doubles the steps. A move is also capped at
+`max_step_ratio` of the radius, a safeguard for crowded starts.
+
+<b>Convergence.</b> A relaxation stops when the largest move of a bubble in one
+step, over its radius, is under `displacement_tolerance`, or after
+`number_of_iterations` steps.
+
+<b>Confinement.</b> A bubble whose move crosses a surface of its region (its
+boundary, or a surface inside it such as a fault that ends in the body) is
+put back at the closest surface point (CGAL's AABB tree), moved inward by
+`surface_offset_ratio` of its radius, and stopped. Bubble centres also stay
+outside the diametral balls of the surface triangles (the ball through the
+corners centred in the triangle's plane) and surface edges, enlarged by
+`1 + diametral_ball_margin`: then every input triangle whose corners do not
+crowd each other is a Delaunay facet and the tetrahedralization keeps it
+whole. A bubble inside such a ball is pushed out along its radius. Balls wider
+than `max_protected_ball_ratio` times the local surface-bubble radius (needle
+and cap triangles) are not protected, since emptying them would leave holes
+larger than the mesh size. A start position that cannot be made valid drops
+the bubble; a move that cannot is undone.
+
+<b>Population control.</b> After the first relaxation, rounds of
+`control_bubble_population()` (delete interior bubbles with an overlap ratio
+above `max_overlap_ratio`, insert new ones in the largest gap next to those
+below `min_overlap_ratio`) alternate with relaxation, until a round changes at
+most `population_tolerance` of the population, or `number_of_population_rounds`
+rounds, or the changes stop shrinking for two rounds in a row (the guard
+against endless add/delete cycles).
+
+<b>Parallelism and determinism.</b> Regions relax independently (their
+surface bubbles are fixed) and, with `CGAL::Parallel_tag` and TBB, at the
+same time; inside a region the force evaluation, the integration and the
+confinement run in parallel. Every bubble sums its forces over its own
+neighbours in a fixed order, and sums and maxima over bubbles are taken in
+fixed blocks, so the result is bit-identical whatever the number of threads.
+
+The output is grouped by region (increasing index); in a region, the
+surviving input bubbles keep their order and new bubbles follow. Interior
+bubbles whose region is not a region of the model are returned unchanged at
+the end.
+
+\tparam ConcurrencyTag `CGAL::Parallel_tag` (default when TBB is linked) or `CGAL::Sequential_tag`.
+\tparam K the kernel of the model.
+\tparam SizingField a model of `BubbleSizingField`: `double operator()(const Point_3& p, std::size_t region) const`,
+        callable from several threads at once.
+
+\param model the geological model.
+\param surface_bubbles the fixed bubbles, one per model point (`surface_point` set).
+\param interior_bubbles the bubbles to relax, each with its `region`; replaced by the result.
+\param sizing the radius wanted at a point of a region.
+\param np an optional sequence of named parameters among the ones listed below.
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{force_law}
+    \cgalParamDescription{the pair force}
+    \cgalParamType{a model of `BubbleForceLaw`}
+    \cgalParamDefault{`Cubic_bubble_force(stiffness)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{stiffness}
+    \cgalParamDescription{k of the default force law}
+    \cgalParamType{`double`} \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{mass}
+    \cgalParamDescription{m, the mass of an interior bubble}
+    \cgalParamType{`double`} \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{damping}
+    \cgalParamDescription{c, the viscous damping}
+    \cgalParamType{`double`} \cgalParamDefault{\f$ 2\sqrt{mk} \f$, k being the force law's `stiffness()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{time_step}
+    \cgalParamDescription{the integration step}
+    \cgalParamType{`double`} \cgalParamDefault{\f$ 0.2\sqrt{m/k} \f$}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{step budget of one relaxation (there is one per population round)}
+    \cgalParamType{`std::size_t`} \cgalParamDefault{2000}
+  \cgalParamNEnd
+  \cgalParamNBegin{displacement_tolerance}
+    \cgalParamDescription{a relaxation has converged when no bubble moves more than this share of its radius in a step}
+    \cgalParamType{`double`} \cgalParamDefault{0.001}
+  \cgalParamNEnd
+  \cgalParamNBegin{min_overlap_ratio, max_overlap_ratio}
+    \cgalParamDescription{bounds of the overlap ratio of interior bubbles}
+    \cgalParamType{`double`} \cgalParamDefault{10 and 14 (the paper's)}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_population_rounds}
+    \cgalParamDescription{most rounds of population control; 0 relaxes only}
+    \cgalParamType{`std::size_t`} \cgalParamDefault{12}
+  \cgalParamNEnd
+  \cgalParamNBegin{population_tolerance}
+    \cgalParamDescription{the population has settled when a round adds and removes at most this share of it}
+    \cgalParamType{`double`} \cgalParamDefault{0.002}
+  \cgalParamNEnd
+  \cgalParamNBegin{insertion_clearance}
+    \cgalParamDescription{least distance, over the sum of radii, from an inserted bubble to all others}
+    \cgalParamType{`double`} \cgalParamDefault{0.85}
+  \cgalParamNEnd
+  \cgalParamNBegin{diametral_ball_margin}
+    \cgalParamDescription{relative enlargement of the protected diametral balls}
+    \cgalParamType{`double`} \cgalParamDefault{0.02}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_protected_ball_ratio}
+    \cgalParamDescription{diametral balls wider than this times the local surface-bubble radius are not protected}
+    \cgalParamType{`double`} \cgalParamDefault{3}
+  \cgalParamNEnd
+  \cgalParamNBegin{surface_offset_ratio}
+    \cgalParamDescription{how far off the surface, over its radius, a bubble put back lands}
+    \cgalParamType{`double`} \cgalParamDefault{0.5}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighbor_skin}
+    \cgalParamDescription{reach of the neighbour lists beyond the force's, over the sum of radii:
+      larger rebuilds them less often but makes them longer}
+    \cgalParamType{`double`} \cgalParamDefault{0.3}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_step_ratio}
+    \cgalParamDescription{longest move in one step over the radius (capped at 0.9 `neighbor_skin`)}
+    \cgalParamType{`double`} \cgalParamDefault{0.25}
+  \cgalParamNEnd
+  \cgalParamNBegin{radius_update_ratio}
+    \cgalParamDescription{a radius is read again from the sizing field after its bubble moved this share of it}
+    \cgalParamType{`double`} \cgalParamDefault{0.05}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{threads used; 0 uses all cores. The result does not depend on it.}
+    \cgalParamType{`std::size_t`} \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{called with a `Relaxation_progress` after every step and at the end of every
+      round of every region; calls are serialised (never two at once) but come from the
+      threads of the regions; returning `false` stops the relaxation (it may also return `void`)}
+    \cgalParamType{a callable}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns a `Relaxation_report`: per region, steps, population changes,
+convergence, and the final distribution of the overlap ratios.
+*/
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class K, class SizingField,
+          class NP = CGAL::parameters::Default_named_parameters>
+Relaxation_report relax_bubbles(const Geological_model_3<K>& model, const std::vector<Bubble<K> >& surface_bubbles,
+                                std::vector<Bubble<K> >& interior_bubbles, const SizingField& sizing,
+                                const NP& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::force_law_t, NP, Cubic_bubble_force>::type
+    Force_law;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NP,
+                                                             internal::Default_relaxation_visitor>::type Visitor;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  const double k = choose_parameter(get_parameter(np, internal_np::stiffness), 1.);
+  const Force_law law = choose_parameter(get_parameter(np, internal_np::force_law), Cubic_bubble_force(k));
+  const internal::Dynamics_settings st = internal::dynamics_settings(np, law.stiffness());
+  Visitor visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), internal::Default_relaxation_visitor());
+  internal::Shared_visitor<Visitor> shared(visitor);
+
+  Relaxation_report report;
+  internal::run_with_threads<ConcurrencyTag>(st.threads, [&] {
+    std::vector<std::size_t> skipped;
+    std::vector<internal::Bubble_system<K> > systems =
+      internal::make_bubble_systems<ConcurrencyTag>(model, surface_bubbles, interior_bubbles, sizing, st, skipped);
+    report.regions.resize(systems.size());
+    internal::for_each_block<ConcurrencyTag>(systems.size(), 1, [&](std::size_t a, std::size_t b) {
+      for(std::size_t i = a; i < b; ++i)
+        report.regions[i] = internal::relax_region<ConcurrencyTag>(systems[i], law, sizing, st, shared);
+    });
+    internal::write_back(systems, interior_bubbles, skipped, interior_bubbles);
+  });
+
+  report.overlap_histogram.assign(internal::overlap_histogram_bins, 0);
+  for(const Region_relaxation_report& r : report.regions)
+  {
+    report.steps += r.steps;
+    report.bubble_steps += r.bubble_steps;
+    report.population += r.population;
+    report.added += r.added;
+    report.removed += r.removed;
+    report.rejected += r.rejected;
+    report.below += r.below;
+    report.inside += r.inside;
+    report.above += r.above;
+    for(std::size_t b = 0; b < r.overlap_histogram.size(); ++b) report.overlap_histogram[b] += r.overlap_histogram[b];
+  }
+  report.seconds = timer.time();
+  return report;
+}
+
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_RELAX_BUBBLES_H

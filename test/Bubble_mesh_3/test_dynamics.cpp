@@ -1,0 +1,296 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Tests of the bubble dynamics: force law, Heun relaxation, confinement,
+// population control, determinism across thread counts.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Bubble_mesh_3/Cubic_bubble_force.h>
+#include <CGAL/Bubble_mesh_3/relax_bubbles.h>
+#include <CGAL/Bubble_mesh_3/control_bubble_population.h>
+#include <CGAL/Random.h>
+
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Bubble_mesh_3::Geological_model_3<K> Model;
+typedef CGAL::Bubble_mesh_3::Bubble<K> Bubble;
+namespace BM = CGAL::Bubble_mesh_3;
+namespace params = CGAL::Bubble_mesh_3::parameters;
+
+// The cube [0,L]^3 as region 1, each face an n x n grid of squares cut into two
+// triangles (normals outward: the cube is the negative region); points shared.
+static Model make_cube(double L, int n)
+{
+  Model m;
+  const std::size_t region = m.add_region("cube");
+  const std::size_t patch = m.add_patch("faces", 0, region);
+  std::vector<std::size_t> index((n + 1) * (n + 1) * (n + 1), std::size_t(-1));
+  auto id = [&](int i, int j, int k) -> std::size_t {
+    std::size_t& v = index[(k * (n + 1) + j) * (n + 1) + i];
+    if(v == std::size_t(-1)) v = m.add_point(Point_3(L * i / n, L * j / n, L * k / n));
+    return v;
+  };
+  // a face: fixed axis a at value s (0 or n); (u,v) the other two axes, ordered so the normal points outward
+  for(int a = 0; a < 3; ++a)
+    for(int s : {0, n})
+      for(int p = 0; p < n; ++p)
+        for(int q = 0; q < n; ++q)
+        {
+          int c[4][3];
+          const int uv[4][2] = {{p, q}, {p + 1, q}, {p + 1, q + 1}, {p, q + 1}};
+          for(int t = 0; t < 4; ++t)
+          {
+            c[t][a] = s;
+            c[t][(a + 1) % 3] = uv[t][0];
+            c[t][(a + 2) % 3] = uv[t][1];
+          }
+          std::size_t w[4];
+          for(int t = 0; t < 4; ++t) w[t] = id(c[t][0], c[t][1], c[t][2]);
+          // (u,v,a) is right-handed: u x v points along +a, outward at s == n
+          if(s == n)
+          {
+            m.add_triangle(w[0], w[1], w[2], patch);
+            m.add_triangle(w[0], w[2], w[3], patch);
+          }
+          else
+          {
+            m.add_triangle(w[0], w[2], w[1], patch);
+            m.add_triangle(w[0], w[3], w[2], patch);
+          }
+        }
+  return m;
+}
+
+static std::vector<Bubble> fixed_bubbles(const Model& m, double radius)
+{
+  std::vector<Bubble> out;
+  for(std::size_t i = 0; i < m.number_of_points(); ++i)
+    out.push_back(Bubble(m.point(i), radius, BM::no_index, i, true));
+  return out;
+}
+
+struct Constant_sizing
+{
+  double r;
+  double operator()(const Point_3&, std::size_t) const { return r; }
+};
+
+// two radii: r_left for x < split, r_right beyond
+struct Split_sizing
+{
+  double split, r_left, r_right;
+  double operator()(const Point_3& p, std::size_t) const { return p.x() < split ? r_left : r_right; }
+};
+
+static double dist(const Bubble& a, const Bubble& b) { return std::sqrt(CGAL::squared_distance(a.center, b.center)); }
+
+// -- 1. the force law
+static void test_force_law()
+{
+  BM::Cubic_bubble_force f(2.);
+  assert(std::abs(f(0.) - 2. * 1.125) < 1e-14);
+  assert(std::abs(f(1.)) < 1e-14);
+  assert(std::abs(f(1.5)) < 1e-14 && f(1.6) == 0.);
+  const double h = 1e-6, slope = (f(1. + h) - f(1. - h)) / (2. * h);
+  assert(std::abs(slope + 2.) < 1e-6);
+  assert(f(0.5) > 0. && f(1.2) < 0.);
+  std::cout << "force law: f(0)=" << f(0.) << " f(1)=" << f(1.) << " f'(1)=" << slope << " f(1.2)=" << f(1.2)
+            << " f(1.5)=" << f(1.5) << std::endl;
+}
+
+// -- 2. two free bubbles of different radii settle touching
+static void test_two_bubbles()
+{
+  const Model cube = make_cube(4., 4);
+  const std::vector<Bubble> surface = fixed_bubbles(cube, 0.5);
+  const Split_sizing sizing{2., 0.2, 0.3};
+  for(double start : {0.3, 0.62, 0.7})
+  {
+    std::vector<Bubble> interior;
+    interior.push_back(Bubble(Point_3(2. - 0.5 * start, 2., 2.), 0.2, 1, BM::no_index, false));
+    interior.push_back(Bubble(Point_3(2. + 0.5 * start, 2.01, 2.), 0.3, 1, BM::no_index, false));
+    const BM::Relaxation_report rep =
+      BM::relax_bubbles(cube, surface, interior, sizing,
+                        params::number_of_population_rounds(0, params::displacement_tolerance(1e-9)));
+    assert(interior.size() == 2);
+    const double l = dist(interior[0], interior[1]);
+    std::cout << "two bubbles: start " << start << ", settle at " << l << " (r_i + r_j = 0.5) after "
+              << rep.steps << " steps" << std::endl;
+    assert(rep.converged());
+    assert(std::abs(l - 0.5) < 1e-4);
+  }
+}
+
+// -- 3. a simple cubic lattice whose outer layer is the cube's surface: every free
+// bubble sees a complete, symmetric neighbourhood, so no force and no motion
+static void test_lattice_at_rest()
+{
+  const int n = 8;
+  const double L = 1., d = L / n, r = 0.5 * d;
+  const Model cube = make_cube(L, n);
+  const std::vector<Bubble> surface = fixed_bubbles(cube, r);
+  std::vector<Bubble> interior;
+  for(int i = 1; i < n; ++i)
+    for(int j = 1; j < n; ++j)
+      for(int k = 1; k < n; ++k)
+        interior.push_back(Bubble(Point_3(i * d, j * d, k * d), r, 1, BM::no_index, false));
+  const std::vector<Bubble> before = interior;
+  double peak = 0.;
+  std::size_t calls = 0;
+  auto watch = [&](const BM::Relaxation_progress& p) {
+    ++calls;
+    peak = (std::max)(peak, p.max_displacement);
+  };
+  const BM::Relaxation_report rep =
+    BM::relax_bubbles(cube, surface, interior, Constant_sizing{r},
+                      params::number_of_population_rounds(0, params::displacement_tolerance(
+                                                               1e-12, CGAL::parameters::visitor(watch)
+                                                                        .number_of_iterations(50))));
+  assert(interior.size() == before.size());
+  double moved = 0.;
+  for(std::size_t i = 0; i < interior.size(); ++i) moved = (std::max)(moved, dist(interior[i], before[i]));
+  std::cout << "lattice at rest: " << interior.size() << " bubbles, " << rep.steps
+            << " steps, largest move " << moved << " (radius " << r << "), " << calls << " visitor calls"
+            << std::endl;
+  assert(moved < 1e-12 * r);
+  assert(peak < 1e-12 && calls > 0);
+}
+
+// a deterministic cloud of `count` points in [m, L-m]^3
+static std::vector<Bubble> cloud(std::size_t count, double L, double m, double r, unsigned seed)
+{
+  CGAL::Random rng(seed);
+  std::vector<Bubble> out;
+  for(std::size_t i = 0; i < count; ++i)
+    out.push_back(Bubble(Point_3(rng.get_double(m, L - m), rng.get_double(m, L - m), rng.get_double(m, L - m)), r, 1,
+                         BM::no_index, false));
+  return out;
+}
+
+// brute force: centre inside the cube, outside every triangle's and edge's diametral ball
+static std::size_t violations(const Model& cube, const std::vector<Bubble>& bubbles, double L, std::size_t& outside)
+{
+  outside = 0;
+  std::size_t in_ball = 0;
+  for(const Bubble& b : bubbles)
+  {
+    const Point_3& p = b.center;
+    if(p.x() <= 0. || p.y() <= 0. || p.z() <= 0. || p.x() >= L || p.y() >= L || p.z() >= L) ++outside;
+    for(std::size_t t = 0; t < cube.number_of_triangles(); ++t)
+    {
+      const auto& tri = cube.triangle(t);
+      const Point_3 &a = cube.point(tri[0]), &c = cube.point(tri[1]), &e = cube.point(tri[2]);
+      const Point_3 cc = CGAL::circumcenter(a, c, e);
+      if(CGAL::squared_distance(p, cc) < CGAL::squared_distance(a, cc)) { ++in_ball; break; }
+      bool edge_hit = false;
+      for(int k = 0; k < 3 && !edge_hit; ++k)
+      {
+        const Point_3 &u = cube.point(tri[k]), &v = cube.point(tri[(k + 1) % 3]);
+        if(CGAL::squared_distance(p, CGAL::midpoint(u, v)) < 0.25 * CGAL::squared_distance(u, v)) edge_hit = true;
+      }
+      if(edge_hit) { ++in_ball; break; }
+    }
+  }
+  return in_ball;
+}
+
+static void print_histogram(const std::vector<std::size_t>& h)
+{
+  std::cout << "  alpha histogram (bin k: k <= alpha < k+1):";
+  for(std::size_t b = 0; b < h.size(); ++b)
+    if(h[b] > 0) std::cout << " [" << b << "]" << h[b];
+  std::cout << std::endl;
+}
+
+// -- 4. a cloud in a cube: stays inside, out of the diametral balls, energy decays, population settles
+static void test_cloud(std::vector<Bubble>& result_1, std::vector<Bubble>& result_2)
+{
+  const int n = 10;
+  const double L = 1., r = 0.05;
+  const Model cube = make_cube(L, n);
+  const std::vector<Bubble> surface = fixed_bubbles(cube, r);
+  // about 1.3 times the bubbles a close packing of radius r holds, and some
+  // starting outside the cube or inside diametral balls
+  const std::size_t count = std::size_t(1.3 * L * L * L / (4. * std::sqrt(2.) * r * r * r));
+  std::vector<Bubble> start = cloud(count, L, 0.02, r, 7);
+  start.push_back(Bubble(Point_3(1.03, 0.5, 0.5), r, 1, BM::no_index, false));
+  start.push_back(Bubble(Point_3(0.5, 0.5, 0.005), r, 1, BM::no_index, false));
+
+  for(std::size_t threads : {std::size_t(1), std::size_t(2)})
+  {
+    std::vector<Bubble> interior = start;
+    double first_ke = -1., peak_ke = 0., last_ke = 0.;
+    std::size_t rounds_seen = 0;
+    auto watch = [&](const BM::Relaxation_progress& p) {
+      if(p.end_of_round)
+      {
+        ++rounds_seen;
+        std::cout << "  round " << p.round << ": steps " << p.step << ", kinetic energy " << p.kinetic_energy
+                  << ", max move/r " << p.max_displacement << ", +" << p.added << " -" << p.removed
+                  << ", population " << p.population << std::endl;
+        return true;
+      }
+      if(first_ke < 0.) first_ke = p.kinetic_energy;
+      peak_ke = (std::max)(peak_ke, p.kinetic_energy);
+      last_ke = p.kinetic_energy;
+      return true;
+    };
+    std::cout << "cloud in a cube, " << threads << " thread(s), " << start.size() << " bubbles:" << std::endl;
+    const BM::Relaxation_report rep =
+      BM::relax_bubbles(cube, surface, interior, Constant_sizing{r},
+                        params::number_of_threads(threads, CGAL::parameters::visitor(watch)));
+    std::size_t outside = 0;
+    const std::size_t in_ball = violations(cube, interior, L, outside);
+    const double tol_ke = 0.5 * double(interior.size()) * std::pow(1e-3 * r / 0.2, 2);
+    std::cout << "  " << rep.population << " bubbles (" << rep.added << " added, " << rep.removed << " removed, "
+              << rep.rejected << " rejected), " << rep.steps << " steps, " << rep.regions[0].rounds
+              << " rounds, settled " << rep.regions[0].population_settled << ", converged " << rep.converged()
+              << ", " << rep.seconds << " s" << std::endl;
+    std::cout << "  outside the cube " << outside << ", in a diametral ball " << in_ball << std::endl;
+    std::cout << "  kinetic energy: peak " << peak_ke << ", last " << last_ke << " (tolerance-speed energy "
+              << tol_ke << ")" << std::endl;
+    std::cout << "  overlap ratio: below 10: " << rep.below << ", in [10,14]: " << rep.inside << ", above 14: "
+              << rep.above << " -> " << 100. * rep.share_inside_bounds() << " % inside" << std::endl;
+    print_histogram(rep.overlap_histogram);
+    assert(outside == 0 && in_ball == 0);
+    assert(rep.converged());
+    assert(last_ke < tol_ke && last_ke < 1e-3 * peak_ke);
+    assert(rounds_seen >= 1);
+    assert(rep.regions[0].population_settled);
+    assert(rep.share_inside_bounds() >= 0.95);
+    // the report agrees with an independent computation of the ratios
+    const std::vector<double> alpha = BM::overlap_ratios(cube, surface, interior);
+    std::size_t inside = 0;
+    for(double a : alpha) inside += (a >= 10. && a <= 14.);
+    assert(inside == rep.inside);
+    (threads == 1 ? result_1 : result_2) = interior;
+  }
+}
+
+int main()
+{
+  test_force_law();
+  test_two_bubbles();
+  test_lattice_at_rest();
+  std::vector<Bubble> one, two;
+  test_cloud(one, two);
+  // -- 5. bit-identical with 1 and 2 threads
+  assert(one.size() == two.size());
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < one.size(); ++i)
+  {
+    const double a[4] = {one[i].center.x(), one[i].center.y(), one[i].center.z(), one[i].radius};
+    const double b[4] = {two[i].center.x(), two[i].center.y(), two[i].center.z(), two[i].radius};
+    if(std::memcmp(a, b, sizeof a) != 0) ++differ;
+  }
+  std::cout << "1 vs 2 threads: " << one.size() << " bubbles, " << differ << " differ bit-wise" << std::endl;
+  assert(differ == 0);
+  return EXIT_SUCCESS;
+}
