@@ -9,7 +9,21 @@
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 #include <CGAL/Bubble_mesh_3/geological_model_summary.h>
 #include <CGAL/Bubble_mesh_3/IO/internal/write_atomically.h>
+#include <CGAL/Bubble_mesh_3/IO/write_mesh.h>
+#include <CGAL/Bubble_mesh_3/IO/write_quality_report.h>
+#include <CGAL/Bubble_mesh_3/IO/write_svg_histograms.h>
+#include <CGAL/Bubble_mesh_3/mesh_quality.h>
+#include <CGAL/make_bubble_mesh_3.h>
 #include <CGAL/Real_timer.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <thread>
+#endif
+
+#include <cstdio>
+#include <iomanip>
+#include <memory>
 
 #include <cstdio>
 #include <cstdlib>
@@ -34,7 +48,17 @@ const char* usage_text =
 "\n"
 "Options:\n"
 "  -h, --help                 show this help and exit\n"
+"  -o, --output FILE          write the mesh to FILE; the format follows the extension:\n"
+"                             .mesh (Medit), .vtu (VTK), .msh (Gmsh 4.1), .node (TetGen\n"
+"                             .node/.ele/.face), .inp (Abaqus), .f3grid (FLAC3D).\n"
+"                             May be given several times. Regions and surfaces are labelled.\n"
 "  --check                    read and validate the model, print its summary, do not mesh\n"
+"  --quality-json FILE        write the mesh quality report (per region) as JSON\n"
+"  --quality-svg FILE         draw the quality histograms (aspect ratio, face and\n"
+"                             dihedral angles, per region) as SVG\n"
+"  --threads N                number of threads (default: all cores); the mesh is the\n"
+"                             same whatever N\n"
+"  --seed S                   seed of the k-means clustering (default 0)\n"
 "  --summary-json FILE        also write the model summary as JSON to FILE\n"
 "  --merge-tolerance T        merge points closer than T times the bounding-box\n"
 "                             diagonal (default 0: merge exactly coincident points only)\n"
@@ -46,6 +70,11 @@ const char* usage_text =
 struct Options
 {
   std::string input;
+  std::vector<std::string> outputs;
+  std::string quality_json;
+  std::string quality_svg;
+  long threads = 0;
+  unsigned seed = 0;
   bool check = false;
   bool quiet = false;
   std::string summary_json;
@@ -80,6 +109,11 @@ Options parse_options(int argc, char** argv)
     };
     if(a == "-h" || a == "--help") { std::cout << usage_text; std::exit(0); }
     else if(a == "--check") o.check = true;
+    else if(a == "-o" || a == "--output") o.outputs.push_back(value(a));
+    else if(a == "--quality-json") o.quality_json = value(a);
+    else if(a == "--quality-svg") o.quality_svg = value(a);
+    else if(a == "--threads") o.threads = long(parse_double(a, value(a)));
+    else if(a == "--seed") o.seed = unsigned(parse_double(a, value(a)));
     else if(a == "-q" || a == "--quiet") o.quiet = true;
     else if(a == "--summary-json") o.summary_json = value(a);
     else if(a == "--merge-tolerance") o.merge_tolerance = parse_double(a, value(a));
@@ -89,6 +123,12 @@ Options parse_options(int argc, char** argv)
   }
   if(o.input.empty()) usage_error("no input file given");
   if(o.merge_tolerance < 0) usage_error("--merge-tolerance must not be negative");
+  if(o.threads < 0) usage_error("--threads must not be negative");
+  for(const std::string& out : o.outputs)
+  {
+    try { BM::IO::check_mesh_file_name(out); }
+    catch(const std::exception& e) { usage_error(e.what()); }
+  }
   return o;
 }
 
@@ -135,7 +175,78 @@ int main(int argc, char** argv)
     return 1;
   }
   if(opt.check) return 0;
+
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> threads;
+  if(opt.threads > 0)
+    threads.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads)));
+#endif
+
+  BM::Mesh_complex_3<K> c3t3;
+  BM::Bubble_mesh_report report;
+  CGAL::Real_timer stage_timer;
+  try
+  {
+    auto progress = [&](const std::string& stage) {
+      if(opt.quiet) return;
+      std::cout << "[" << std::fixed << std::setprecision(1) << stage_timer.time() << " s] " << stage << "...\n"
+                << std::defaultfloat << std::flush;
+    };
+    stage_timer.start();
+    BM::make_bubble_mesh_3(model, c3t3,
+                           BM::parameters::stage_callback(progress,
+                           BM::parameters::bubble_mesh_report(&report,
+                           CGAL::parameters::random_seed(opt.seed))));
+    stage_timer.stop();
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "bubble_mesh_3: meshing failed: " << e.what() << "\n";
+    return 1;
+  }
+
+  const auto& tr = report.tetrahedralization;
+  auto quality = BM::compute_c3t3_quality(c3t3,
+                   BM::parameters::number_of_steiner_points(tr.number_of_steiner_points(),
+                   BM::parameters::number_of_input_triangles(model.number_of_triangles(),
+                   BM::parameters::number_of_input_triangles_kept_whole(tr.number_of_triangles_kept_whole))));
+  for(auto& rq : quality.regions)
+    if(rq.region >= 1 && std::size_t(rq.region) <= model.number_of_regions())
+      rq.name = model.region(std::size_t(rq.region)).name;
+
   if(!opt.quiet)
-    std::cout << "meshing is not available yet in this version: stopping after validation\n";
+  {
+    std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << tr.number_of_vertices
+              << " vertices (" << report.number_of_surface_bubbles << " surface points, "
+              << tr.number_of_interior_points_inserted << " bubbles, " << tr.number_of_steiner_points()
+              << " Steiner points)\n"
+              << "input triangles kept whole: " << tr.number_of_triangles_kept_whole << " of "
+              << model.number_of_triangles() << " (" << std::setprecision(4)
+              << 100. * tr.share_of_triangles_kept_whole() << " %)\n" << std::defaultfloat
+              << "time: surface bubbles " << report.time_surface_bubbles << " s, placement "
+              << report.time_placement << " s, relaxation " << report.time_relaxation
+              << " s, tetrahedralization " << report.time_tetrahedralization << " s\n";
+    BM::IO::write_quality_report_text(std::cout, quality);
+  }
+
+  try
+  {
+    for(const std::string& out : opt.outputs)
+    {
+      BM::IO::write_mesh(out, c3t3, model);
+      if(!opt.quiet) std::cout << "wrote " << out << "\n";
+    }
+    if(!opt.quality_json.empty())
+      BM::IO::internal::write_atomically(opt.quality_json,
+                                         [&](std::ostream& os) { BM::IO::write_quality_report_json(os, quality); });
+    if(!opt.quality_svg.empty())
+      BM::IO::internal::write_atomically(opt.quality_svg,
+                                         [&](std::ostream& os) { BM::IO::write_svg_histograms(os, quality); });
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "bubble_mesh_3: error: " << e.what() << "\n";
+    return 1;
+  }
   return 0;
 }

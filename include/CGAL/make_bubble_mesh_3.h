@@ -1,0 +1,189 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_MAKE_BUBBLE_MESH_3_H
+#define CGAL_MAKE_BUBBLE_MESH_3_H
+
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/Mesh_complex_3.h>
+#include <CGAL/Bubble_mesh_3/place_surface_bubbles.h>
+#include <CGAL/Bubble_mesh_3/Surface_bubble_sizing_field.h>
+#include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
+#include <CGAL/Bubble_mesh_3/relax_bubbles.h>
+#include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+What `make_bubble_mesh_3()` did, stage by stage.
+*/
+struct Bubble_mesh_report
+{
+  std::size_t number_of_surface_bubbles = 0;  ///< one per model point
+  std::size_t number_of_initial_bubbles = 0;  ///< interior bubbles placed (stage 2)
+  std::size_t number_of_relaxed_bubbles = 0;  ///< interior bubbles after relaxation and population control
+  std::vector<Region_placement_statistics> placement; ///< per region (entry 0 unused)
+  Relaxation_report relaxation;               ///< stages 3 and 4
+  Tetrahedralization_report tetrahedralization; ///< stage 5
+  double time_surface_bubbles = 0.;           ///< seconds
+  double time_placement = 0.;                 ///< seconds, clustering included
+  double time_relaxation = 0.;                ///< seconds
+  double time_tetrahedralization = 0.;        ///< seconds
+};
+
+namespace internal_np {
+enum bubble_mesh_report_t { bubble_mesh_report };
+enum stage_callback_t { stage_callback };
+} // namespace internal_np
+
+namespace parameters {
+
+/// \ingroup PkgBubbleMesh3Ref
+/// `make_bubble_mesh_3()` fills the `Bubble_mesh_report` pointed to
+inline Named_function_parameters<Bubble_mesh_report*, internal_np::bubble_mesh_report_t>
+bubble_mesh_report(Bubble_mesh_report* r)
+{
+  return Named_function_parameters<Bubble_mesh_report*, internal_np::bubble_mesh_report_t>(r);
+}
+/// \cond SKIP_IN_MANUAL
+template <class T, class Tag, class Base>
+Named_function_parameters<Bubble_mesh_report*, internal_np::bubble_mesh_report_t, Named_function_parameters<T, Tag, Base> >
+bubble_mesh_report(Bubble_mesh_report* r, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {r, np};
+}
+/// \endcond
+
+/// \ingroup PkgBubbleMesh3Ref
+/// `make_bubble_mesh_3()` calls `f(stage_name)` when a stage starts (for a progress line)
+inline Named_function_parameters<std::function<void(const std::string&)>, internal_np::stage_callback_t>
+stage_callback(const std::function<void(const std::string&)>& f)
+{
+  return Named_function_parameters<std::function<void(const std::string&)>, internal_np::stage_callback_t>(f);
+}
+/// \cond SKIP_IN_MANUAL
+template <class T, class Tag, class Base>
+Named_function_parameters<std::function<void(const std::string&)>, internal_np::stage_callback_t,
+                          Named_function_parameters<T, Tag, Base> >
+stage_callback(const std::function<void(const std::string&)>& f, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {f, np};
+}
+/// \endcond
+
+} // namespace parameters
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+Meshes a valid geological model with the clustering-based bubble method and
+fills `c3t3`: surface bubbles (`place_surface_bubbles()`), clustering and
+initial interior bubbles (`place_initial_bubbles()` with a
+`Surface_bubble_sizing_field`), relaxation and population control
+(`relax_bubbles()`), and the conforming Delaunay tetrahedralization with the
+input surfaces recovered and the cells labelled by region
+(`tetrahedralize_bubbles()`).
+
+The model must be valid (`validate_geological_model()`); the stages assume
+it. Each stage is a free function that can be called alone; this function
+only chains them, passing `np` to each, so every named parameter of the
+stages is accepted here too.
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{bubble_mesh_report}
+    \cgalParamDescription{receives the figures of every stage}
+    \cgalParamType{`Bubble_mesh_report*`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{stage_callback}
+    \cgalParamDescription{called with the stage's name when it starts}
+    \cgalParamType{`std::function<void(const std::string&)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNExtra{the named parameters of `place_surface_bubbles()`, `Surface_bubble_sizing_field`,
+    `place_initial_bubbles()`, `relax_bubbles()` and `tetrahedralize_bubbles()`}
+\cgalNamedParamsEnd
+
+\throws Geological_model_error or Tetrahedralization_error, naming the element at fault
+*/
+template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& model,
+                                      Mesh_complex_3<GeomTraits>& c3t3,
+                                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Bubble_mesh_report local;
+  Bubble_mesh_report* report = choose_parameter(get_parameter(np, internal_np::bubble_mesh_report), &local);
+  const std::function<void(const std::string&)> stage =
+    choose_parameter(get_parameter(np, internal_np::stage_callback), std::function<void(const std::string&)>());
+  auto start = [&](const char* name) { if(stage) stage(name); };
+
+  Real_timer timer;
+  start("surface bubbles");
+  timer.start();
+  const std::vector<Bubble<GeomTraits> > surface_bubbles = place_surface_bubbles(model, np);
+  const Surface_bubble_sizing_field<GeomTraits> sizing(model, surface_bubbles, np);
+  timer.stop();
+  report->time_surface_bubbles = timer.time();
+  report->number_of_surface_bubbles = surface_bubbles.size();
+
+  start("clustering and initial bubbles");
+  timer.reset();
+  timer.start();
+  std::vector<Bubble<GeomTraits> > bubbles =
+    place_initial_bubbles(model, surface_bubbles, sizing,
+                          parameters::placement_statistics(&report->placement, np));
+  timer.stop();
+  report->time_placement = timer.time();
+  report->number_of_initial_bubbles = bubbles.size();
+
+  start("relaxation");
+  timer.reset();
+  timer.start();
+  report->relaxation = relax_bubbles(model, surface_bubbles, bubbles, sizing, np);
+  timer.stop();
+  report->time_relaxation = timer.time();
+  report->number_of_relaxed_bubbles = bubbles.size();
+
+  start("tetrahedralization");
+  timer.reset();
+  timer.start();
+  std::vector<typename GeomTraits::Point_3> centres;
+  centres.reserve(bubbles.size());
+  for(const Bubble<GeomTraits>& b : bubbles) centres.push_back(b.center);
+  report->tetrahedralization = tetrahedralize_bubbles(model, centres, c3t3, np);
+  timer.stop();
+  report->time_tetrahedralization = timer.time();
+  return *report;
+}
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+Same as above, returning the mesh.
+*/
+template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Mesh_complex_3<GeomTraits> make_bubble_mesh_3(const Geological_model_3<GeomTraits>& model,
+                                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  Mesh_complex_3<GeomTraits> c3t3;
+  make_bubble_mesh_3(model, c3t3, np);
+  return c3t3;
+}
+
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_MAKE_BUBBLE_MESH_3_H
