@@ -45,6 +45,7 @@ struct Tetrahedralization_report
   std::size_t number_of_facets = 0;                      ///< facets in the complex (on input triangles)
   std::size_t number_of_interior_points_inserted = 0;    ///< interior points that are mesh vertices
   std::size_t number_of_interior_points_duplicate = 0;   ///< dropped: on a model point or on an earlier interior point
+  std::size_t number_of_interior_points_on_surfaces = 0; ///< dropped: on an input triangle (no facet could avoid them)
   std::size_t number_of_interior_points_encroaching = 0; ///< dropped: in the ball of an input edge or triangle
   std::size_t number_of_interior_points_outside = 0;     ///< dropped: outside every region
   std::size_t number_of_steiner_points_on_edges = 0;
@@ -58,8 +59,8 @@ struct Tetrahedralization_report
 
   std::size_t number_of_interior_points_dropped() const
   {
-    return number_of_interior_points_duplicate + number_of_interior_points_encroaching +
-           number_of_interior_points_outside;
+    return number_of_interior_points_duplicate + number_of_interior_points_on_surfaces +
+           number_of_interior_points_encroaching + number_of_interior_points_outside;
   }
   std::size_t number_of_steiner_points() const
   {
@@ -79,7 +80,8 @@ inline std::ostream& operator<<(std::ostream& os, const Tetrahedralization_repor
   os << "vertices " << r.number_of_vertices << ", cells " << r.number_of_cells << ", surface facets "
      << r.number_of_facets << "\n"
      << "interior points: " << r.number_of_interior_points_inserted << " inserted, "
-     << r.number_of_interior_points_duplicate << " duplicate, " << r.number_of_interior_points_encroaching
+     << r.number_of_interior_points_duplicate << " duplicate, " << r.number_of_interior_points_on_surfaces
+     << " on surfaces, " << r.number_of_interior_points_encroaching
      << " encroaching, " << r.number_of_interior_points_outside << " outside\n"
      << "Steiner points: " << r.number_of_steiner_points_on_edges << " on edges, "
      << r.number_of_steiner_points_on_triangles << " on triangles\n"
@@ -94,7 +96,7 @@ inline std::ostream& operator<<(std::ostream& os, const Tetrahedralization_repor
 namespace internal {
 
 // Marks the interior points to drop: duplicates of model points or of earlier
-// interior points, and (if asked) points in the closed diametral ball of an
+// interior points, points on input triangles, and (if asked) points in the closed diametral ball of an
 // input edge or the closed equatorial ball of a well-shaped input triangle,
 // where they would keep it out of the Delaunay triangulation - but only balls
 // that hold no other model point: an element that model points encroach upon
@@ -126,7 +128,7 @@ void mark_dropped_interior_points(const Geological_model_3<GeomTraits>& model,
       ++report.number_of_interior_points_duplicate;
     }
   }
-  if(!drop_encroaching || interior.empty()) return;
+  if(interior.empty()) return;
 
   typedef typename CGAL::Pointer_property_map<Point_3>::const_type                 Point_map;
   typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<GeomTraits> > Traits;
@@ -161,6 +163,27 @@ void mark_dropped_interior_points(const Geological_model_3<GeomTraits>& model,
       }
   };
   auto side = gt.side_of_bounded_sphere_3_object();
+
+  // a point on an input triangle would be a vertex of every facet over it
+  for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+  {
+    const auto& tri = model.triangle(t);
+    const typename GeomTraits::Triangle_3 triangle(model.point(tri[0]), model.point(tri[1]), model.point(tri[2]));
+    const Point_3 center = CGAL::centroid(triangle);
+    double r2 = 0.;
+    for(int k = 0; k < 3; ++k)
+      r2 = (std::max)(r2, CGAL::to_double(CGAL::squared_distance(center, triangle.vertex(k))));
+    search(interior_tree, interior_map, center, std::sqrt(r2));
+    for(std::size_t i : found)
+      if(!dropped[i] && CGAL::coplanar(triangle[0], triangle[1], triangle[2], interior[i]) &&
+         triangle.has_on(interior[i]))
+      {
+        dropped[i] = 1;
+        ++report.number_of_interior_points_on_surfaces;
+      }
+  }
+  if(!drop_encroaching) return;
+
   for(const auto& e : recovery.edge_ends())
   {
     const Point_3& a = model.point(e[0]);
@@ -198,8 +221,8 @@ never move, Steiner points never leave the input surfaces), and whose cells
 are labelled with their regions.
 
 The steps:
-1. interior points on a model point or on an earlier interior point are
-   dropped; so are (by default) those in the closed diametral ball of an input
+1. interior points on a model point, on an earlier interior point or on an
+   input triangle are dropped; so are (by default) those in the closed diametral ball of an input
    edge or the closed equatorial ball of a well-shaped input triangle, which
    would keep it out of the triangulation, when no other model point lies in
    that ball (else the element is split anyway);

@@ -11,7 +11,7 @@
 
 #include <cstddef>
 #include <string>
-#include <unordered_map>
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
@@ -41,7 +41,10 @@ void label_regions(const Geological_model_3<GeomTraits>& model, const Recovery& 
 
   const Tr& tr = c3t3.triangulation();
   auto bare = tr.geom_traits().construct_point_3_object();
-  std::unordered_map<Cell_handle, int> label;
+  // labels indexed by the cells' time stamps (unique among live cells); -1 = none yet
+  std::size_t stamps = 0;
+  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) stamps = (std::max)(stamps, c->time_stamp() + 1);
+  std::vector<int> label(stamps, -1);
   std::vector<Cell_handle> queue;
 
   auto where = [&](Cell_handle c) {
@@ -58,11 +61,11 @@ void label_regions(const Geological_model_3<GeomTraits>& model, const Recovery& 
   };
   // `from_triangle` (or else `from_cell`) says where the region came from, for the message
   auto assign = [&](Cell_handle c, int region, std::size_t from_triangle, Cell_handle from_cell) {
-    auto ins = label.emplace(c, region);
-    if(ins.second) { queue.push_back(c); return; }
-    if(ins.first->second != region)
+    int& l = label[c->time_stamp()];
+    if(l == -1) { l = region; queue.push_back(c); return; }
+    if(l != region)
       throw Tetrahedralization_error(
-        "the cell near " + where(c) + " lies in " + model.region_label(std::size_t(ins.first->second)) +
+        "the cell near " + where(c) + " lies in " + model.region_label(std::size_t(l)) +
         " and in " + model.region_label(std::size_t(region)) + " (reached from " +
         (from_triangle != std::size_t(-1) ? recovery.describe_triangle(from_triangle)
                                           : "the cell near " + where(from_cell)) +
@@ -95,7 +98,7 @@ void label_regions(const Geological_model_3<GeomTraits>& model, const Recovery& 
   for(std::size_t q = 0; q < queue.size(); ++q)
   {
     const Cell_handle c = queue[q];
-    const int region = label[c];
+    const int region = label[c->time_stamp()];
     for(int i = 0; i < 4; ++i)
     {
       if(c3t3.is_in_complex(c, i)) continue;
@@ -105,15 +108,15 @@ void label_regions(const Geological_model_3<GeomTraits>& model, const Recovery& 
 
   for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
   {
-    auto it = label.find(c);
-    if(it == label.end())
+    const int l = label[c->time_stamp()];
+    if(l == -1)
       throw Tetrahedralization_error("internal error: the cell near " + where(c) + " was not reached by the labelling");
-    if(it->second != 0) c3t3.add_to_complex(c, it->second);
+    if(l != 0) c3t3.add_to_complex(c, l);
   }
   for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
-    if(tr.is_infinite(c) && label.count(c) && label[c] != 0)
+    if(tr.is_infinite(c) && label[c->time_stamp()] > 0)
       throw Tetrahedralization_error("the outside of the model is labelled " +
-                                     model.region_label(std::size_t(label[c])) +
+                                     model.region_label(std::size_t(label[c->time_stamp()])) +
                                      ": the model's outer boundary is not closed or wrongly oriented");
 }
 

@@ -40,6 +40,7 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
+#include <CGAL/Real_timer.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -174,7 +175,7 @@ public:
         throw Tetrahedralization_error(describe_point_kind(i) + " at " + to_string(pts[i]) +
                                        " coincides with another point");
       records_[i].vh = v;
-      id_of_.emplace(v, i);
+      set_id(v, i);
       hint = v->cell();
     }
   }
@@ -182,26 +183,33 @@ public:
   /// recovers all input edges and triangles; throws Tetrahedralization_error on failure
   void recover()
   {
-    for(std::size_t e = 0; e < edge_ends_.size(); ++e)
-      queue_.push_back(Subsegment{e, edge_points_[e].front(), edge_points_[e].back()});
+    triangle_dirty_.assign(model_.number_of_triangles(), 1);
+    edge_dirty_.assign(edge_ends_.size(), 1);
+    CGAL::Real_timer timer;
+    timer.start();
     for(std::size_t pass = 0;; ++pass)
     {
-      recover_queued_subsegments(no_index_);
-      bool changed = false;
-      for(std::size_t t = 0; t < model_.number_of_triangles(); ++t)
-        if(!is_recovered(t))
-        {
-          recover_triangle(t);
-          changed = true;
-        }
-      if(options_.verbose)
-        std::cout << "  recovery pass " << pass << ": " << number_of_edge_points_ << " points on edges, "
-                  << number_of_triangle_points_ << " on triangles" << std::endl;
-      if(!changed) break;
-      // later insertions may have broken earlier triangles or edges: check all again
+      // only what an insertion touched since its last check can have changed
+      bool checked = false;
       for(std::size_t e = 0; e < edge_ends_.size(); ++e)
+      {
+        if(!edge_dirty_[e]) continue;
+        edge_dirty_[e] = 0;
+        checked = true;
         for(std::size_t k = 0; k + 1 < edge_points_[e].size(); ++k)
           queue_.push_back(Subsegment{e, edge_points_[e][k], edge_points_[e][k + 1]});
+      }
+      recover_queued_subsegments(no_index_);
+      for(std::size_t t = 0; t < model_.number_of_triangles(); ++t)
+      {
+        if(!triangle_dirty_[t]) continue;
+        checked = true;
+        recover_triangle(t);
+      }
+      if(options_.verbose)
+        std::cout << "  recovery pass " << pass << ": " << number_of_edge_points_ << " points on edges, "
+                  << number_of_triangle_points_ << " on triangles (" << timer.time() << " s)" << std::endl;
+      if(!checked) break;
     }
   }
 
@@ -415,13 +423,13 @@ public:
   /// whether triangle `t` got no Steiner point (then it is a single facet)
   bool is_kept_whole(std::size_t t) const { return expected_number_of_facets(t) == 1; }
 
+  // Mesh_3's vertices carry time stamps, unique among live vertices (none is
+  // removed here): a vector indexed by them is a cheap, deterministic map.
   std::size_t id_of(Vertex_handle v) const
   {
-    auto it = id_of_.find(v);
-    CGAL_assertion(it != id_of_.end());
-    return it->second;
+    CGAL_assertion(v->time_stamp() < id_by_stamp_.size() && id_by_stamp_[v->time_stamp()] != no_index_);
+    return id_by_stamp_[v->time_stamp()];
   }
-  bool has_id(Vertex_handle v) const { return id_of_.count(v) != 0; }
 
   const std::vector<Vertex_record>& records() const { return records_; }
   std::size_t number_of_edge_points() const { return number_of_edge_points_; }
@@ -627,7 +635,10 @@ private:
 
     // for each edge end, the sine of the smallest angle to another edge there
     // (1 from 90 degrees on)
-    std::vector<std::size_t> start(np + 1, 0), incident(2 * edge_ends_.size());
+    std::vector<std::size_t>& start = point_edges_start_;
+    std::vector<std::size_t>& incident = point_edges_;
+    start.assign(np + 1, 0);
+    incident.resize(2 * edge_ends_.size());
     for(const auto& e : edge_ends_) { ++start[e[0] + 1]; ++start[e[1] + 1]; }
     for(std::size_t i = 0; i < np; ++i) start[i + 1] += start[i];
     std::vector<std::size_t> pos(start.begin(), start.end() - 1);
@@ -710,6 +721,37 @@ private:
 
   // ---- Steiner points --------------------------------------------------------
 
+  void mark_dirty(std::size_t id)
+  {
+    const Vertex_record& r = records_[id];
+    switch(r.kind)
+    {
+    case Vertex_kind::input_point:
+      for(std::size_t k = point_triangles_start_[r.element]; k < point_triangles_start_[r.element + 1]; ++k)
+        triangle_dirty_[point_triangles_[k]] = 1;
+      for(std::size_t k = point_edges_start_[r.element]; k < point_edges_start_[r.element + 1]; ++k)
+        edge_dirty_[point_edges_[k]] = 1;
+      break;
+    case Vertex_kind::edge_point:
+      for(std::size_t k = edge_triangles_start_[r.element]; k < edge_triangles_start_[r.element + 1]; ++k)
+        triangle_dirty_[edge_triangles_[k]] = 1;
+      edge_dirty_[r.element] = 1;
+      break;
+    case Vertex_kind::triangle_point:
+      triangle_dirty_[r.element] = 1;
+      break;
+    default:
+      break;
+    }
+  }
+
+  void set_id(Vertex_handle v, std::size_t id)
+  {
+    const std::size_t ts = v->time_stamp();
+    if(ts >= id_by_stamp_.size()) id_by_stamp_.resize((std::max)(2 * id_by_stamp_.size(), ts + 1), no_index_);
+    id_by_stamp_[ts] = id;
+  }
+
   std::size_t insert_steiner_point(const Point_3& p, Vertex_kind kind, std::size_t element, double t,
                                    Cell_handle hint, const std::string& context)
   {
@@ -718,14 +760,25 @@ private:
                                      std::to_string(options_.maximum_number_of_steiner_points) +
                                      " Steiner points (maximum_number_of_steiner_points), while recovering " +
                                      context);
-    const std::size_t nv = tr_.number_of_vertices();
-    Vertex_handle v = tr_.insert(Weighted_point(p), hint);
-    if(v == Vertex_handle() || tr_.number_of_vertices() != nv + 1)
+    const Weighted_point wp(p);
+    typename Tr::Locate_type lt;
+    int li, lj;
+    const Cell_handle c = tr_.locate(wp, lt, li, lj, hint);
+    if(lt == Tr::VERTEX)
       throw Tetrahedralization_error("a Steiner point at " + to_string(p) +
                                      " falls on an existing vertex (numerical limit) while recovering " + context);
+    std::vector<Facet> boundary;
+    std::vector<Cell_handle> conflict;
+    tr_.find_conflicts(wp, c, std::back_inserter(boundary), std::back_inserter(conflict), CGAL::Emptyset_iterator());
+    // the edges and triangles whose facets may change
+    for(Cell_handle x : conflict)
+      for(int i = 0; i < 4; ++i)
+        if(!tr_.is_infinite(x->vertex(i))) mark_dirty(id_of(x->vertex(i)));
+    const Vertex_handle v = tr_.insert_in_hole(wp, conflict.begin(), conflict.end(), boundary.front().first,
+                                               boundary.front().second);
     const std::size_t id = records_.size();
     records_.push_back(Vertex_record{v, kind, element, t});
-    id_of_.emplace(v, id);
+    set_id(v, id);
     if(kind == Vertex_kind::edge_point) ++number_of_edge_points_;
     else ++number_of_triangle_points_;
     return id;
@@ -852,9 +905,8 @@ private:
     // take weighted points): from those around u, across facets
     const typename Geom_traits::Segment_3 segment(pu, pv);
     std::vector<Cell_handle> stack;
-    std::unordered_set<Cell_handle> seen;
     tr_.incident_cells(records_[u].vh, std::back_inserter(stack));
-    seen.insert(stack.begin(), stack.end());
+    std::unordered_set<Cell_handle> seen(stack.begin(), stack.end());
     while(!stack.empty())
     {
       const Cell_handle c = stack.back();
@@ -931,6 +983,7 @@ private:
     std::vector<Cell_handle> conflict;
     for(;;)
     {
+      triangle_dirty_[t] = 0;
       if(is_recovered(t)) return;
 
       // its boundary subsegments first
@@ -1163,11 +1216,13 @@ private:
   Options options_;
 
   std::vector<Vertex_record> records_;
-  std::unordered_map<Vertex_handle, std::size_t> id_of_;
+  std::vector<std::size_t> id_by_stamp_;
 
   std::vector<std::array<std::size_t, 2> > edge_ends_;    // model point indices, first < second
   std::vector<std::size_t> edge_triangles_start_, edge_triangles_;   // triangles of each edge
   std::vector<std::size_t> point_triangles_start_, point_triangles_; // triangles of each model point
+  std::vector<std::size_t> point_edges_start_, point_edges_;         // edges of each model point
+  std::vector<char> triangle_dirty_, edge_dirty_; // to check again: an insertion changed cells around them
   std::vector<std::size_t> plane_group_;                             // of each triangle
   std::vector<Vector_3> group_normal_;
   Point_3 centroid_; // of the model points: strictly inside their convex hull
