@@ -519,6 +519,16 @@ void test_errors()
   }
   assert(thrown);
 
+  // a NaN interior point is named
+  thrown = false;
+  try { BM::tetrahedralize_bubbles(m, std::vector<Point_3>(3, Point_3(0.5, std::nan(""), 0.5)), c3t3); }
+  catch(const BM::Tetrahedralization_error& e)
+  {
+    thrown = true;
+    assert(std::string(e.what()).find("interior point 0") != std::string::npos);
+  }
+  assert(thrown);
+
   // a Steiner budget of zero on a model that needs Steiner points names a triangle or edge
   Model pinch;
   make_layered_box(pinch, Grid{4}, {[](double, double) { return 0.4; }, [](double x, double) { return 0.4 + 0.1 * x; }},

@@ -228,16 +228,26 @@ The steps:
    that ball (else the element is split anyway);
 2. all points go into the triangulation of `c3t3` (spatially sorted,
    sequential insertion: the triangulation of a point set is unique, also in
-   degenerate cases since CGAL breaks ties by symbolic perturbation, and
-   sequential insertion keeps the storage order, hence vertex numbering in
-   files, the same from run to run);
-3. input edges, then input triangles, are recovered (see the package manual:
-   missing subsegments are split at midpoints or, next to an input vertex, on
-   power-of-two shells around it; missing sub-triangles get their circumcentre
-   unless it encroaches upon a subsegment, which is then split instead);
+   degenerate (cospherical) cases since CGAL breaks ties by a symbolic
+   perturbation ordered by the points' coordinates, and sequential insertion
+   keeps the storage order, hence vertex numbering in files, the same from
+   run to run);
+3. input edges, then input triangles, are recovered: a missing subsegment
+   is split where the vertex encroaching most upon it asks for (on a sphere
+   around an input end it shares a surface with, or at its projection), or
+   else at a dyadic distance from an end (power-of-two shells next to input
+   vertices); a missing sub-triangle gets its circumcentre unless that
+   encroaches upon a subsegment, which is then split instead. Only edges and
+   triangles near an insertion are checked again;
 4. facets on input triangles enter the complex with patch index + 1, cells
-   get the region on their side by a flood fill that crosses no such facet;
-   interior points outside every region are removed.
+   get the region on their side by a flood fill that crosses no such facet
+   (the flat cells that rounded Steiner points can make on a plane are put
+   on one side of it); interior points outside every region are removed.
+
+Sequential by design: CGAL's parallel insertion needs a `Parallel_tag`
+triangulation, whose storage order (vertex numbering in files, and the order
+in which recovery meets ties) depends on thread scheduling; insertion is a
+few percent of the time here anyway.
 
 \param model a valid geological model (see `validate_geological_model()`)
 \param interior_points points inside the regions (relaxed bubble centres)
@@ -297,6 +307,13 @@ tetrahedralize_bubbles(const Geological_model_3<GeomTraits>& model,
   c3t3.clear();
   if(model.number_of_triangles() == 0)
     throw Tetrahedralization_error("the model has no triangles");
+  for(std::size_t i = 0; i < interior_points.size(); ++i)
+  {
+    const Point_3& p = interior_points[i];
+    if(!(std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+         std::isfinite(CGAL::to_double(p.z()))))
+      throw Tetrahedralization_error("interior point " + std::to_string(i) + " has a coordinate that is not finite");
+  }
 
   const bool drop = choose_parameter(get_parameter(np, internal_np::drop_encroaching_points), true);
   const double ratio_bound = choose_parameter(get_parameter(np, internal_np::drop_ball_ratio_bound), 1.);
