@@ -1,0 +1,494 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_INTERNAL_PERTURB_INTERIOR_VERTICES_H
+#define CGAL_BUBBLE_MESH_3_INTERNAL_PERTURB_INTERIOR_VERTICES_H
+
+// Moves interior vertices of slivers inside their region (the first step of
+// `remove_slivers()`).
+//
+// A move is a removal and a re-insertion, so that the triangulation stays
+// regular (the exuder needs it). Removing an interior vertex `v` only
+// re-triangulates its star, whose boundary (the link) stays: no complex facet
+// is lost. Inserting the new point `p` destroys the facets inside its conflict
+// zone; so a candidate `p` is allowed only if no facet inside that zone is in
+// the complex and every conflict cell is in `v`'s region - then the zone, and
+// `p`, are inside the region, every complex facet survives, and the new cells
+// (`p` joined to the zone's boundary) belong to the region. Candidates are
+// compared exactly on what changes: the cells destroyed (old star and old
+// conflict cells) against the cells made (new star and the surviving cells of
+// the re-triangulated hole). The original position is always a candidate, and
+// re-inserting it gives back the original triangulation (the regular
+// triangulation of a point set is unique, CGAL breaking ties symbolically).
+//
+// Labels: new cells take the region; a new cell's facet takes the patch index
+// its neighbour across the facet carries (that neighbour survived, so its
+// label is right). Counts of the complex are kept by `add_to_complex` /
+// `remove_from_complex` on the cells made and destroyed.
+
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+namespace internal {
+
+typedef std::array<double, 3> Vec3;
+
+inline Vec3 sub(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
+// Smallest dihedral angle (degrees) of a tetrahedron, with the atan2 form that
+// stays accurate near 0 and 180 degrees (as `tetrahedron_quality()` does); a
+// flat tetrahedron gives 0.
+inline double smallest_dihedral_angle(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3)
+{
+  const Vec3* p[4] = {&p0, &p1, &p2, &p3};
+  Vec3 n[4]; // outward area vector of the face opposite vertex k
+  for(int k = 0; k < 4; ++k)
+  {
+    const Vec3& a = *p[(k + 1) % 4];
+    const Vec3& b = *p[(k + 2) % 4];
+    const Vec3& c = *p[(k + 3) % 4];
+    n[k] = cross(sub(b, a), sub(c, a));
+    if(dot(n[k], sub(*p[k], a)) > 0.) n[k] = {{-n[k][0], -n[k][1], -n[k][2]}};
+  }
+  double smallest = 180.;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j)
+    {
+      const Vec3 c = cross(n[i], n[j]);
+      const double a = std::atan2(std::sqrt(dot(c, c)), -dot(n[i], n[j])) * 180. / CGAL_PI;
+      smallest = (std::min)(smallest, a);
+    }
+  return smallest;
+}
+
+// coordinates of a (bare) point and of a vertex of a Mesh_3 triangulation
+template <class Point>
+Vec3 to_vec3(const Point& p)
+{
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+template <class Tr>
+Vec3 vertex_coordinates(const Tr& tr, typename Tr::Vertex_handle v)
+{
+  return to_vec3(tr.geom_traits().construct_point_3_object()(v->point()));
+}
+template <class Tr>
+double cell_smallest_dihedral_angle(const Tr& tr, typename Tr::Cell_handle c)
+{
+  return smallest_dihedral_angle(vertex_coordinates(tr, c->vertex(0)), vertex_coordinates(tr, c->vertex(1)),
+                                 vertex_coordinates(tr, c->vertex(2)), vertex_coordinates(tr, c->vertex(3)));
+}
+
+// Smallest dihedral angle and count of cells under a bound, over a set of cells.
+struct Cell_set_quality
+{
+  double min_angle = 180.;
+  std::size_t under_bound = 0;
+
+  void add(double angle, double bound)
+  {
+    min_angle = (std::min)(min_angle, angle);
+    if(angle < bound) ++under_bound;
+  }
+  // strictly better: a larger smallest angle and no more cells under the bound
+  bool improves_on(const Cell_set_quality& o, double tolerance) const
+  {
+    return min_angle > o.min_angle + tolerance && under_bound <= o.under_bound;
+  }
+};
+
+/// What the perturbation did.
+struct Perturbation_statistics
+{
+  std::size_t number_of_passes = 0;
+  std::size_t number_of_vertices_tried = 0;   // vertices of slivers that could move
+  std::size_t number_of_moves = 0;            // accepted moves
+  std::size_t number_of_vertices_moved = 0;   // distinct vertices among them
+  std::size_t number_of_candidates_rejected = 0; // would leave the region or break a complex facet
+  bool skipped_nonzero_weights = false;       // not run: the triangulation has weights
+  bool time_limit_reached = false;
+};
+
+template <class C3T3>
+class Interior_vertex_perturber
+{
+  typedef typename C3T3::Triangulation            Tr;
+  typedef typename Tr::Geom_traits                GT;
+  typedef typename Tr::Vertex_handle              Vertex_handle;
+  typedef typename Tr::Cell_handle                Cell_handle;
+  typedef typename Tr::Facet                      Facet;
+  typedef typename Tr::Locate_type                Locate_type;
+  typedef typename Tr::Weighted_point             Weighted_point;
+  typedef typename Tr::Bare_point                 Bare_point;
+  typedef typename C3T3::Subdomain_index          Subdomain_index;
+  typedef typename C3T3::Index                    Index;
+
+public:
+  Interior_vertex_perturber(C3T3& c3t3, double sliver_bound, double radius_factor,
+                            unsigned int number_of_random_directions, unsigned int seed)
+    : c3t3_(c3t3), tr_(c3t3.triangulation()), bound_(sliver_bound), radius_factor_(radius_factor),
+      number_of_directions_(number_of_random_directions), random_(seed)
+  {}
+
+  // Runs at most `max_passes` passes over the vertices of slivers, stopping
+  // early when a pass moves nothing or when `time_limit` seconds are spent.
+  Perturbation_statistics operator()(std::size_t max_passes, double time_limit)
+  {
+    Perturbation_statistics stats;
+    if(tr_.dimension() != 3) return stats;
+    for(auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
+      if(CGAL::to_double(v->point().weight()) != 0.)
+      {
+        // with weights a re-insertion could hide a neighbour, which the
+        // cell bases of Mesh_3 cannot give back
+        stats.skipped_nonzero_weights = true;
+        return stats;
+      }
+
+    CGAL::Real_timer timer;
+    timer.start();
+    std::unordered_set<Vertex_handle> moved;
+    for(std::size_t pass = 0; pass < max_passes; ++pass)
+    {
+      ++stats.number_of_passes;
+      const std::size_t moves_before = stats.number_of_moves;
+      // vertices of slivers, worst sliver first; ties in triangulation order,
+      // which is the same from run to run (never addresses). A sliver with
+      // all its vertices on surfaces is worked on by the interior vertices
+      // across its faces instead: moved towards it, one of them may take it
+      // into its star.
+      std::vector<std::pair<double, Vertex_handle> > queue;
+      std::unordered_map<Vertex_handle, std::size_t> position;
+      std::unordered_map<Vertex_handle, std::vector<Vec3> > targets;
+      auto enqueue = [&](Vertex_handle v, double a) {
+        auto ins = position.insert(std::make_pair(v, queue.size()));
+        if(ins.second) queue.push_back(std::make_pair(a, v));
+        else queue[ins.first->second].first = (std::min)(queue[ins.first->second].first, a);
+      };
+      for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c)
+      {
+        const double a = cell_angle(c);
+        if(!(a < bound_)) continue;
+        bool has_interior_vertex = false;
+        for(int i = 0; i < 4; ++i)
+          if(c3t3_.in_dimension(c->vertex(i)) == 3)
+          {
+            enqueue(c->vertex(i), a);
+            has_interior_vertex = true;
+          }
+        if(has_interior_vertex) continue;
+        const Vec3 target = cell_circumcenter(c);
+        for(int i = 0; i < 4; ++i)
+        {
+          if(c3t3_.is_in_complex(Cell_handle(c), i)) continue;
+          const Cell_handle n = c->neighbor(i);
+          const Vertex_handle u = n->vertex(n->index(Cell_handle(c)));
+          if(tr_.is_infinite(u) || c3t3_.in_dimension(u) != 3) continue;
+          enqueue(u, a);
+          targets[u].push_back(target);
+        }
+      }
+      std::stable_sort(queue.begin(), queue.end(),
+                       [](const std::pair<double, Vertex_handle>& a, const std::pair<double, Vertex_handle>& b) {
+                         return a.first < b.first;
+                       });
+      static const std::vector<Vec3> no_targets;
+      for(const auto& entry : queue)
+      {
+        if(timer.time() > time_limit)
+        {
+          stats.time_limit_reached = true;
+          break;
+        }
+        // each vertex is once in the queue, and only the vertex being moved is
+        // removed, so the handle is still valid here
+        auto t = targets.find(entry.second);
+        Vertex_handle nv;
+        const int result = move(entry.second, t == targets.end() ? no_targets : t->second, stats, nv);
+        if(result > 0)
+        {
+          moved.erase(entry.second);
+          moved.insert(nv);
+        }
+      }
+      if(stats.time_limit_reached || stats.number_of_moves == moves_before) break;
+    }
+    stats.number_of_vertices_moved = moved.size();
+    return stats;
+  }
+
+private:
+  Vec3 coordinates(const Bare_point& p) const { return to_vec3(p); }
+  Vec3 coordinates(Vertex_handle v) const { return vertex_coordinates(tr_, v); }
+  double cell_angle(Cell_handle c) const { return cell_smallest_dihedral_angle(tr_, c); }
+  Vec3 cell_circumcenter(Cell_handle c) const
+  {
+    const auto p = tr_.geom_traits().construct_circumcenter_3_object()(
+      tr_.geom_traits().construct_point_3_object()(c->vertex(0)->point()),
+      tr_.geom_traits().construct_point_3_object()(c->vertex(1)->point()),
+      tr_.geom_traits().construct_point_3_object()(c->vertex(2)->point()),
+      tr_.geom_traits().construct_point_3_object()(c->vertex(3)->point()));
+    return coordinates(p);
+  }
+  // the tetrahedron made of point `p` and facet `f`
+  double cone_angle(const Vec3& p, const Facet& f) const
+  {
+    Vec3 q[3];
+    for(int k = 0, j = 0; k < 4; ++k)
+      if(k != f.second) q[j++] = coordinates(f.first->vertex(k));
+    return smallest_dihedral_angle(p, q[0], q[1], q[2]);
+  }
+
+  // a facet of a new cell takes the label its surviving neighbour carries
+  void copy_facet_label_from_mirror(Cell_handle c, int i) const
+  {
+    const Cell_handle m = c->neighbor(i);
+    const int mi = m->index(c);
+    if(!c3t3_.is_in_complex(m, mi)) return;
+    c3t3_.set_surface_patch_index(c, i, c3t3_.surface_patch_index(m, mi));
+    c->set_facet_surface_center(i, m->get_facet_surface_center(mi));
+    c->set_facet_surface_center_index(i, m->get_facet_surface_center_index(mi));
+  }
+  void label_new_cell(Cell_handle c, const Subdomain_index& region) const
+  {
+    c3t3_.add_to_complex(c, region);
+    for(int i = 0; i < 4; ++i) copy_facet_label_from_mirror(c, i);
+  }
+
+  // A vertex can move if it is a volume vertex, on no complex facet, and all
+  // its cells are finite and in one region. Sets `region`.
+  bool is_movable(Vertex_handle v, const std::vector<Cell_handle>& star, Subdomain_index& region) const
+  {
+    if(c3t3_.in_dimension(v) != 3 || star.empty()) return false;
+    region = c3t3_.subdomain_index(star.front());
+    if(region == Subdomain_index()) return false;
+    for(Cell_handle c : star)
+    {
+      if(tr_.is_infinite(c) || !(c3t3_.subdomain_index(c) == region)) return false;
+      const int iv = c->index(v);
+      for(int i = 0; i < 4; ++i)
+        if(i != iv && c3t3_.is_in_complex(c, i)) return false;
+    }
+    return true;
+  }
+
+  struct Candidate
+  {
+    Bare_point point;
+    Cell_set_quality made;      // the new star and the hole cells outside the conflict zone
+    Cell_set_quality destroyed; // the old star and the old cells inside the conflict zone
+    std::vector<Cell_handle> conflict_cells;
+    Facet boundary_facet;
+    bool valid = false;
+  };
+
+  // Conflict zone of `p` in the triangulation without the vertex, checked
+  // against the region and the complex, and the quality of what it makes.
+  void evaluate(Candidate& cand, const Subdomain_index& region, Cell_handle hint,
+                const std::vector<Cell_handle>& hole, const std::unordered_map<Cell_handle, double>& hole_angles,
+                const Cell_set_quality& old_star) const
+  {
+    cand.valid = false;
+    const Weighted_point wp(cand.point, 0);
+    Locate_type lt;
+    int li, lj;
+    const Cell_handle c = tr_.locate(wp, lt, li, lj, hint);
+    if(lt == Tr::VERTEX || lt == Tr::OUTSIDE_CONVEX_HULL || lt == Tr::OUTSIDE_AFFINE_HULL || tr_.is_infinite(c))
+      return;
+    std::vector<Facet> boundary, internal;
+    cand.conflict_cells.clear();
+    tr_.find_conflicts(wp, c, std::back_inserter(boundary), std::back_inserter(cand.conflict_cells),
+                       std::back_inserter(internal));
+    if(boundary.empty()) return;
+    for(Cell_handle cc : cand.conflict_cells)
+      if(tr_.is_infinite(cc) || !(c3t3_.subdomain_index(cc) == region)) return;
+    for(const Facet& f : internal)
+      if(c3t3_.is_in_complex(f)) return;
+
+    // only these cells differ between the original triangulation and the
+    // one with `v` at `p`
+    const Vec3 p = coordinates(cand.point);
+    cand.made = Cell_set_quality();
+    cand.destroyed = old_star;
+    for(const Facet& f : boundary) cand.made.add(cone_angle(p, f), bound_);
+    std::unordered_set<Cell_handle> in_conflict(cand.conflict_cells.begin(), cand.conflict_cells.end());
+    for(Cell_handle h : hole)
+      if(in_conflict.count(h) == 0) cand.made.add(hole_angles.at(h), bound_);
+    for(Cell_handle cc : cand.conflict_cells)
+      if(hole_angles.count(cc) == 0) cand.destroyed.add(cell_angle(cc), bound_);
+    cand.boundary_facet = boundary.front();
+    cand.valid = true;
+  }
+
+  // Tries to move `v`, also towards `targets` (circumcentres of slivers next
+  // to it); returns 1 if moved, 0 if put back, -1 if not movable.
+  int move(Vertex_handle v, const std::vector<Vec3>& sliver_targets, Perturbation_statistics& stats,
+           Vertex_handle& nv)
+  {
+    std::vector<Cell_handle> star;
+    tr_.incident_cells(v, std::back_inserter(star));
+    Subdomain_index region;
+    if(!is_movable(v, star, region)) return -1;
+
+    Cell_set_quality old_star;
+    std::vector<std::pair<double, Cell_handle> > slivers;
+    for(Cell_handle c : star)
+    {
+      const double a = cell_angle(c);
+      old_star.add(a, bound_);
+      if(a < bound_) slivers.push_back(std::make_pair(a, c));
+    }
+    if(slivers.empty() && sliver_targets.empty()) return -1; // fixed meanwhile by another move
+    ++stats.number_of_vertices_tried;
+    std::stable_sort(slivers.begin(), slivers.end(),
+                     [](const std::pair<double, Cell_handle>& a, const std::pair<double, Cell_handle>& b) {
+                       return a.first < b.first;
+                     });
+
+    const Vec3 p0 = coordinates(v);
+    std::vector<Vertex_handle> neighbours;
+    tr_.finite_adjacent_vertices(v, std::back_inserter(neighbours));
+    double shortest = std::numeric_limits<double>::infinity();
+    Vec3 centroid = {{0., 0., 0.}};
+    for(Vertex_handle w : neighbours)
+    {
+      const Vec3 q = coordinates(w);
+      shortest = (std::min)(shortest, std::sqrt(dot(sub(q, p0), sub(q, p0))));
+      for(int k = 0; k < 3; ++k) centroid[k] += q[k] / double(neighbours.size());
+    }
+    const double radius = radius_factor_ * shortest;
+    if(!(radius > 0.)) return -1;
+
+    // candidate positions, in a fixed order: away from each sliver's opposite
+    // face (what raises that sliver's height), towards the centroid of the
+    // neighbours (Laplacian), seeded random points of the ball
+    std::vector<Vec3> targets;
+    auto add_step = [&](const Vec3& direction, double length, double longest) {
+      const double n = std::sqrt(dot(direction, direction));
+      if(!(n > 0.)) return;
+      const double s = (std::min)(length, longest) / n;
+      targets.push_back({{p0[0] + s * direction[0], p0[1] + s * direction[1], p0[2] + s * direction[2]}});
+    };
+    for(std::size_t k = 0; k < slivers.size() && k < 4; ++k)
+    {
+      const Cell_handle c = slivers[k].second;
+      const int iv = c->index(v);
+      const Vec3 a = coordinates(c->vertex((iv + 1) % 4));
+      const Vec3 b = coordinates(c->vertex((iv + 2) % 4));
+      const Vec3 d = coordinates(c->vertex((iv + 3) % 4));
+      Vec3 n = cross(sub(b, a), sub(d, a));
+      if(dot(n, sub(p0, a)) < 0.) n = {{-n[0], -n[1], -n[2]}};
+      for(double f : {1., 0.5, 0.25}) add_step(n, f * radius, radius);
+    }
+    for(std::size_t k = 0; k < sliver_targets.size() && k < 4; ++k)
+    {
+      // into the sliver's circumsphere, where the conflict zone takes it in
+      const Vec3 d = sub(sliver_targets[k], p0);
+      const double l = std::sqrt(dot(d, d));
+      for(double f : {0.75, 0.5, 0.25}) add_step(d, (std::min)(f * l, 2. * radius), 2. * radius);
+    }
+    const Vec3 to_centroid = sub(centroid, p0);
+    const double to_centroid_length = std::sqrt(dot(to_centroid, to_centroid));
+    add_step(to_centroid, to_centroid_length, radius);
+    add_step(to_centroid, 0.5 * to_centroid_length, radius);
+    for(unsigned int k = 0; k < number_of_directions_; ++k)
+    {
+      Vec3 d;
+      do
+      {
+        d = {{random_.get_double(-1., 1.), random_.get_double(-1., 1.), random_.get_double(-1., 1.)}};
+      } while(dot(d, d) > 1. || dot(d, d) < 1e-6);
+      add_step(d, radius * std::cbrt(random_.get_double(0., 1.)), radius);
+    }
+
+    // take `v` out; its star becomes the hole, re-triangulated in the region
+    const Weighted_point original = v->point();
+    const int dimension = c3t3_.in_dimension(v);
+    const Index index = c3t3_.index(v);
+    for(Cell_handle c : star) c3t3_.remove_from_complex(c);
+    std::vector<Cell_handle> hole;
+    tr_.remove_and_give_new_cells(v, std::back_inserter(hole));
+    std::unordered_map<Cell_handle, double> hole_angles;
+    for(Cell_handle c : hole)
+    {
+      label_new_cell(c, region);
+      hole_angles[c] = cell_angle(c);
+    }
+
+    // the original position: its conflict zone is the hole, and re-inserting
+    // it gives back the original cells
+    Candidate best;
+    best.point = tr_.geom_traits().construct_point_3_object()(original);
+    evaluate(best, region, hole.front(), hole, hole_angles, old_star);
+    CGAL_assertion(best.valid && best.conflict_cells.size() == hole.size());
+    bool improved = false;
+    Candidate cand;
+    for(const Vec3& t : targets)
+    {
+      cand.point = Bare_point(t[0], t[1], t[2]);
+      evaluate(cand, region, hole.front(), hole, hole_angles, old_star);
+      if(!cand.valid)
+      {
+        ++stats.number_of_candidates_rejected;
+        continue;
+      }
+      // a move must beat what it replaces (so the global smallest angle never
+      // drops and the count under the bound never grows); among those, the
+      // best smallest angle wins, the first one on ties
+      if(!cand.made.improves_on(cand.destroyed, angle_tolerance)) continue;
+      if(improved && !(cand.made.min_angle > best.made.min_angle ||
+                       (cand.made.min_angle == best.made.min_angle && cand.made.under_bound < best.made.under_bound)))
+        continue;
+      std::swap(best, cand);
+      improved = true;
+    }
+
+    for(Cell_handle c : best.conflict_cells) c3t3_.remove_from_complex(c);
+    nv = tr_.insert_in_hole(Weighted_point(best.point, 0), best.conflict_cells.begin(), best.conflict_cells.end(),
+                            best.boundary_facet.first, best.boundary_facet.second);
+    c3t3_.set_dimension(nv, dimension);
+    c3t3_.set_index(nv, index);
+    std::vector<Cell_handle> new_star;
+    tr_.incident_cells(nv, std::back_inserter(new_star));
+    for(Cell_handle c : new_star) label_new_cell(c, region);
+    if(!improved) return 0;
+    ++stats.number_of_moves;
+    return 1;
+  }
+
+  C3T3& c3t3_;
+  Tr& tr_;
+  double bound_;
+  double radius_factor_;
+  unsigned int number_of_directions_;
+  CGAL::Random random_;
+  // a move must gain at least this (degrees): no churn on rounding noise
+  static constexpr double angle_tolerance = 1e-6;
+};
+
+} // namespace internal
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_INTERNAL_PERTURB_INTERIOR_VERTICES_H

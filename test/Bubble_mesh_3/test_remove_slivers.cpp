@@ -1,0 +1,529 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Tests remove_slivers(): on a hand-made three-region complex full of slivers
+// (a jittered cubic lattice), every complex facet survives with its patch,
+// patch areas and region volumes do not change, surface vertices never move,
+// the smallest dihedral angle never gets worse and the count of slivers drops;
+// each step alone keeps the same promises; the same seed gives the same mesh.
+// Then the same on the mesh of the generated layered model (bubbles placed,
+// tetrahedralized), with the share of tets under 10 degrees that no small
+// input angle explains, and on GOCAD models given as arguments.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
+#include <CGAL/Bubble_mesh_3/Mesh_complex_3.h>
+#include <CGAL/Bubble_mesh_3/make_layered_model.h>
+#include <CGAL/Bubble_mesh_3/mesh_quality.h>
+#include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
+#include <CGAL/Bubble_mesh_3/place_surface_bubbles.h>
+#include <CGAL/Bubble_mesh_3/remove_slivers.h>
+#include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+namespace BM = CGAL::Bubble_mesh_3;
+
+// Mesh_triangulation_3 reads only these types from a domain: int regions and patches
+struct Index_types
+{
+  typedef int Subdomain_index;
+  typedef int Surface_patch_index;
+  typedef int Index;
+};
+typedef CGAL::Mesh_triangulation_3<Index_types, K>::type Tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, int, int> C3T3;
+
+typedef std::array<double, 3> Coordinates;
+typedef std::array<Coordinates, 3> Triangle;
+
+template <class Mesh>
+Coordinates coordinates(const Mesh& c3t3, typename Mesh::Triangulation::Vertex_handle v)
+{
+  const auto p = c3t3.triangulation().geom_traits().construct_point_3_object()(v->point());
+  return {{p.x(), p.y(), p.z()}};
+}
+
+// What must not change, in coordinates (vertex handles change when vertices move).
+struct Surface_state
+{
+  std::map<Triangle, int> facets;    // sorted corner coordinates -> patch
+  std::map<int, double> patch_areas;
+  std::map<int, double> region_volumes;
+  std::set<Coordinates> surface_points; // vertices of complex facets
+  std::size_t number_of_cells = 0;
+  double min_dihedral = 180.;
+  std::size_t under_10 = 0, under_bound = 0;
+};
+
+template <class Mesh>
+Surface_state surface_state(const Mesh& c3t3, double bound)
+{
+  Surface_state s;
+  const auto& tr = c3t3.triangulation();
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    Triangle t;
+    for(int k = 0, j = 0; k < 4; ++k)
+      if(k != f->second) t[j++] = coordinates(c3t3, f->first->vertex(k));
+    std::sort(t.begin(), t.end());
+    const int patch = c3t3.surface_patch_index(*f);
+    assert(s.facets.insert(std::make_pair(t, patch)).second);
+    const K::Vector_3 u(t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]);
+    const K::Vector_3 w(t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]);
+    s.patch_areas[patch] += 0.5 * std::sqrt(CGAL::cross_product(u, w).squared_length());
+    for(const Coordinates& c : t) s.surface_points.insert(c);
+  }
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    ++s.number_of_cells;
+    const Coordinates p0 = coordinates(c3t3, c->vertex(0)), p1 = coordinates(c3t3, c->vertex(1)),
+                      p2 = coordinates(c3t3, c->vertex(2)), p3 = coordinates(c3t3, c->vertex(3));
+    const BM::Tetrahedron_quality q = BM::tetrahedron_quality(p0, p1, p2, p3);
+    // cells of a regular triangulation are positively oriented
+    assert(q.volume > 0.);
+    s.region_volumes[c3t3.subdomain_index(c)] += q.volume;
+    s.min_dihedral = (std::min)(s.min_dihedral, q.min_dihedral_angle);
+    if(q.min_dihedral_angle < 10.) ++s.under_10;
+    if(q.min_dihedral_angle < bound) ++s.under_bound;
+  }
+  (void)tr;
+  return s;
+}
+
+// labels consistent with the triangulation: counters right, a facet between
+// cells of different regions is in the complex, vertices of complex facets
+// have dimension 2, the others 3 with their region as index
+template <class Mesh>
+void check_labels(const Mesh& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  std::size_t cells = 0, facets = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    if(c3t3.is_in_complex(c)) ++cells;
+  for(auto f = tr.finite_facets_begin(); f != tr.finite_facets_end(); ++f)
+  {
+    const auto m = tr.mirror_facet(*f);
+    assert(c3t3.is_in_complex(*f) == c3t3.is_in_complex(m));
+    assert(c3t3.surface_patch_index(*f) == c3t3.surface_patch_index(m));
+    if(c3t3.is_in_complex(*f)) ++facets;
+    else assert(c3t3.subdomain_index(f->first) == c3t3.subdomain_index(m.first));
+  }
+  assert(cells == c3t3.number_of_cells_in_complex());
+  assert(facets == c3t3.number_of_facets_in_complex());
+  std::set<typename Mesh::Triangulation::Vertex_handle> on_surface;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    for(int k = 0; k < 4; ++k)
+      if(k != f->second) on_surface.insert(f->first->vertex(k));
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+  {
+    if(on_surface.count(v) != 0) { assert(c3t3.in_dimension(v) == 2); continue; }
+    assert(c3t3.in_dimension(v) == 3);
+    std::vector<typename Mesh::Triangulation::Cell_handle> star;
+    tr.incident_cells(v, std::back_inserter(star));
+    for(auto c : star) assert(c3t3.subdomain_index(c) == c3t3.index(v));
+  }
+}
+
+// the promises of remove_slivers(), between two states of one mesh
+void check_kept(const Surface_state& before, const Surface_state& after, const char* what)
+{
+  assert(after.facets == before.facets);
+  double worst_area = 0., worst_volume = 0.;
+  assert(after.patch_areas.size() == before.patch_areas.size());
+  for(const auto& pa : before.patch_areas)
+    worst_area = (std::max)(worst_area, std::abs(after.patch_areas.at(pa.first) - pa.second) / pa.second);
+  assert(after.region_volumes.size() == before.region_volumes.size());
+  for(const auto& rv : before.region_volumes)
+    worst_volume = (std::max)(worst_volume, std::abs(after.region_volumes.at(rv.first) - rv.second) / rv.second);
+  assert(worst_area < 1e-12);
+  assert(worst_volume < 1e-9);
+  assert(after.surface_points == before.surface_points);
+  assert(after.min_dihedral >= before.min_dihedral);
+  std::cout << "  " << what << ": " << after.facets.size() << " complex facets identical, "
+            << after.surface_points.size() << " surface vertices unmoved, largest relative change of a patch area "
+            << worst_area << ", of a region volume " << worst_volume << "; min dihedral " << before.min_dihedral
+            << " -> " << after.min_dihedral << ", cells under 10 degrees " << before.under_10 << " -> "
+            << after.under_10 << ", under the bound " << before.under_bound << " -> " << after.under_bound << " (of "
+            << after.number_of_cells << " cells)" << std::endl;
+}
+
+// A box [0,1]^3 in three regions: 1 below z = 1/2, 2 and 3 above it, left and
+// right of x = 1/2. Points: the cubic lattice of step 1/n; those not on a
+// surface are jittered, which makes many slivers (a perturbed lattice is
+// nearly cospherical everywhere). Surface squares keep empty diametral balls
+// (jitter < 0.29 of the step), so every surface is a union of facets.
+int region_of(double x, double z) { return z < 0.5 ? 1 : (x < 0.5 ? 2 : 3); }
+
+void make_lattice_complex(C3T3& c3t3, int n, double jitter, unsigned int seed)
+{
+  CGAL::Random rng(seed);
+  const double h = 1. / n;
+  std::vector<Tr::Weighted_point> points;
+  for(int i = 0; i <= n; ++i)
+    for(int j = 0; j <= n; ++j)
+      for(int k = 0; k <= n; ++k)
+      {
+        const bool surface = i == 0 || i == n || j == 0 || j == n || k == 0 || k == n || 2 * k == n ||
+                             (2 * i == n && 2 * k >= n);
+        double x = i * h, y = j * h, z = k * h;
+        if(!surface)
+        {
+          x += rng.get_double(-jitter, jitter) * h;
+          y += rng.get_double(-jitter, jitter) * h;
+          z += rng.get_double(-jitter, jitter) * h;
+        }
+        points.push_back(Tr::Weighted_point(Tr::Bare_point(x, y, z), 0));
+      }
+  Tr& tr = c3t3.triangulation();
+  // one by one, in a fixed order, so that vertex storage order is the same every time
+  Tr::Vertex_handle hint;
+  for(const auto& p : points) hint = tr.insert(p, hint);
+  assert(tr.number_of_vertices() == points.size());
+
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+  {
+    const Point_3 g = CGAL::centroid(tr.tetrahedron(c));
+    c3t3.add_to_complex(c, region_of(g.x(), g.z()));
+  }
+  for(auto f = tr.all_facets_begin(); f != tr.all_facets_end(); ++f)
+  {
+    const auto m = tr.mirror_facet(*f);
+    const int a = c3t3.subdomain_index(f->first), b = c3t3.subdomain_index(m.first);
+    if(a == b || c3t3.is_in_complex(*f)) continue;
+    c3t3.add_to_complex(*f, 1 + 4 * (std::min)(a, b) + (std::max)(a, b));
+    for(int k = 0; k < 4; ++k)
+      if(k != f->second)
+      {
+        // the construction is right only if facets between regions lie on the planes
+        const auto v = f->first->vertex(k);
+        const Coordinates p = coordinates(c3t3, v);
+        const bool on_plane = p[0] == 0. || p[0] == 1. || p[1] == 0. || p[1] == 1. || p[2] == 0. ||
+                              p[2] == 1. || p[2] == 0.5 || (p[0] == 0.5 && p[2] >= 0.5);
+        assert(on_plane);
+        c3t3.set_dimension(v, 2);
+        c3t3.set_index(v, 1 + 4 * (std::min)(a, b) + (std::max)(a, b));
+      }
+  }
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(c3t3.in_dimension(v) != 2)
+    {
+      const Coordinates p = coordinates(c3t3, v);
+      c3t3.set_dimension(v, 3);
+      c3t3.set_index(v, region_of(p[0], p[2]));
+    }
+  check_labels(c3t3);
+}
+
+// the mesh as plain data, to compare two runs
+std::vector<std::array<double, 5> > fingerprint(const C3T3& c3t3)
+{
+  std::vector<std::array<double, 5> > out;
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    out.push_back({{v->point().x(), v->point().y(), v->point().z(), v->point().weight(), double(v->in_dimension())}});
+  std::vector<std::array<double, 5> > cells;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    std::array<Coordinates, 4> q;
+    for(int k = 0; k < 4; ++k) q[k] = coordinates(c3t3, c->vertex(k));
+    std::sort(q.begin(), q.end());
+    for(const Coordinates& p : q) cells.push_back({{p[0], p[1], p[2], double(c3t3.subdomain_index(c)), 0.}});
+  }
+  out.insert(out.end(), cells.begin(), cells.end());
+  return out;
+}
+
+void test_lattice()
+{
+  std::cout << "== hand-made complex: three regions, jittered 12^3 lattice" << std::endl;
+  const double bound = 15.;
+  C3T3 original;
+  make_lattice_complex(original, 12, 0.2, 7);
+  const Surface_state s0 = surface_state(original, bound);
+  std::cout << "  " << original.triangulation().number_of_vertices() << " vertices, " << s0.number_of_cells
+            << " cells, " << s0.facets.size() << " complex facets, " << s0.surface_points.size()
+            << " surface vertices; min dihedral " << s0.min_dihedral << ", under 10 degrees " << s0.under_10
+            << ", under " << bound << " degrees " << s0.under_bound << std::endl;
+  assert(s0.region_volumes.size() == 3 && std::abs(s0.region_volumes.at(1) - 0.5) < 1e-12);
+  assert(s0.under_10 > 100); // the lattice does make slivers
+
+  // each step alone
+  {
+    C3T3 c3t3(original);
+    const BM::Sliver_removal_report r =
+      BM::remove_slivers(c3t3, BM::parameters::sliver_bound(bound).random_seed(1));
+    std::cout << r << std::endl;
+    check_labels(c3t3);
+    assert(c3t3.triangulation().is_valid());
+    const Surface_state s = surface_state(c3t3, bound);
+    check_kept(s0, s, "perturbation only");
+    assert(r.perturbation_done && !r.exudation_done && r.number_of_moves > 0);
+    assert(r.number_of_slivers_before == s0.under_bound && r.number_of_slivers_after == s.under_bound);
+    assert(std::abs(r.min_dihedral_angle_after - s.min_dihedral) < 1e-9);
+    assert(s.under_bound < s0.under_bound && s.min_dihedral > s0.min_dihedral);
+  }
+  {
+    C3T3 c3t3(original);
+    const BM::Sliver_removal_report r = BM::remove_slivers(
+      c3t3, BM::parameters::exude_slivers(
+              true, BM::parameters::perturb_interior_vertices(false, BM::parameters::sliver_bound(bound)))
+              .maximum_running_time(2.));
+    std::cout << r << std::endl;
+    check_labels(c3t3);
+    const Surface_state s = surface_state(c3t3, bound);
+    check_kept(s0, s, "exudation only");
+    assert(!r.perturbation_done && r.exudation_done);
+    assert(s.under_bound < s0.under_bound);
+    // weights are now set: a re-insertion could hide a neighbour, so no perturbation
+    const BM::Sliver_removal_report r2 = BM::remove_slivers(c3t3, BM::parameters::sliver_bound(bound));
+    assert(r2.perturbation_skipped_nonzero_weights && !r2.perturbation_done && r2.number_of_moves == 0);
+    assert(surface_state(c3t3, bound).region_volumes == s.region_volumes);
+    std::cout << "  on the exuded mesh (weights set) the perturbation is skipped, nothing changes" << std::endl;
+  }
+
+  // both steps (the exudation finds nothing left to do), twice with the same
+  // seed, once with another
+  C3T3 a(original), b(original), c(original);
+  const auto np = BM::parameters::exude_slivers(true, BM::parameters::sliver_bound(bound)).random_seed(3);
+  const BM::Sliver_removal_report ra = BM::remove_slivers(a, np);
+  std::cout << ra << std::endl;
+  check_labels(a);
+  const Surface_state sa = surface_state(a, bound);
+  check_kept(s0, sa, "perturbation and exudation");
+  assert(sa.under_bound < s0.under_bound && sa.under_10 < s0.under_10);
+  BM::remove_slivers(b, np);
+  assert(fingerprint(a) == fingerprint(b));
+  BM::remove_slivers(c, BM::parameters::sliver_bound(bound).random_seed(4));
+  check_kept(s0, surface_state(c, bound), "another seed");
+  std::cout << "  same seed: identical meshes (" << fingerprint(a).size() << " numbers); another seed: "
+            << (fingerprint(a) == fingerprint(c) ? "identical" : "different") << std::endl;
+
+  // the quality report agrees, and says what the input does not explain
+  const BM::Mesh_quality_report q0 = BM::compute_c3t3_quality(original), qa = BM::compute_c3t3_quality(a);
+  assert(std::abs(q0.all.min_dihedral_angle - s0.min_dihedral) < 1e-9);
+  assert(std::abs(qa.all.min_dihedral_angle - sa.min_dihedral) < 1e-9);
+  std::cout << "  quality report: share under 10 degrees not at a small surface angle "
+            << q0.all.share_under_10_not_at_small_surface_angle << " -> "
+            << qa.all.share_under_10_not_at_small_surface_angle << std::endl;
+
+  // a time budget is obeyed roughly, and the promises hold when it cuts steps short
+  {
+    C3T3 t(original);
+    const BM::Sliver_removal_report r =
+      BM::remove_slivers(t, BM::parameters::exude_slivers(true, BM::parameters::sliver_bound(25.)).maximum_running_time(0.05));
+    std::cout << "  with 0.05 s: " << r.time << " s, time limit reached: " << r.time_limit_reached << std::endl;
+    check_labels(t);
+    assert(r.time_limit_reached && r.time < 2.);
+    check_kept(surface_state(original, 25.), surface_state(t, 25.), "0.05 s budget, bound 25");
+  }
+
+  // the optional polish (interior remeshing): kept only if it keeps everything
+  {
+    C3T3 p(original);
+    const BM::Sliver_removal_report r =
+      BM::remove_slivers(p, BM::parameters::polish_interior(true, BM::parameters::sliver_bound(bound)));
+    std::cout << r << std::endl;
+    check_labels(p);
+    const Surface_state s = surface_state(p, bound);
+    check_kept(s0, s, "with polish");
+    assert(r.polish_done || r.polish_reverted);
+    assert(r.min_dihedral_angle_after >= r.min_dihedral_angle_after_exudation);
+    assert(r.number_of_slivers_after <= r.number_of_slivers_after_exudation);
+  }
+}
+
+// ---- meshes of geological models -----------------------------------------------
+
+typedef BM::Geological_model_3<K> Model;
+typedef BM::Mesh_complex_3<K> Model_c3t3;
+
+// smallest angle (degrees) of each input triangle, and a way to find the input
+// triangle a complex facet lies on (the one nearest to its centroid)
+struct Input_angles
+{
+  typedef std::vector<K::Triangle_3>::const_iterator Iterator;
+  typedef CGAL::AABB_triangle_primitive<K, Iterator> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+  std::vector<K::Triangle_3> triangles;
+  std::vector<double> min_angle;
+  Tree tree;
+
+  explicit Input_angles(const Model& m)
+  {
+    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+    {
+      const Point_3 p[3] = {m.point(m.triangle(t)[0]), m.point(m.triangle(t)[1]), m.point(m.triangle(t)[2])};
+      triangles.emplace_back(p[0], p[1], p[2]);
+      double a = 180.;
+      for(int k = 0; k < 3; ++k) a = (std::min)(a, CGAL::approximate_angle(p[(k + 1) % 3], p[k], p[(k + 2) % 3]));
+      min_angle.push_back(a);
+    }
+    tree.insert(triangles.begin(), triangles.end());
+    tree.build();
+  }
+  double operator()(const Model_c3t3::Facet& f) const
+  {
+    const auto& tr_point = [&](int k) { return f.first->vertex(k)->point().point(); };
+    Point_3 q[3];
+    for(int k = 0, j = 0; k < 4; ++k)
+      if(k != f.second) q[j++] = tr_point(k);
+    const auto hit = tree.closest_point_and_primitive(CGAL::centroid(q[0], q[1], q[2]));
+    return min_angle[std::size_t(hit.second - triangles.begin())];
+  }
+};
+
+// cells under 10 degrees per region (0: all), and among them those with a
+// vertex off the surfaces (the only ones a perturbation can reach)
+std::map<int, std::pair<std::size_t, std::size_t> > cells_under_10(const Model_c3t3& c3t3)
+{
+  std::map<int, std::pair<std::size_t, std::size_t> > count;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    const BM::Tetrahedron_quality q =
+      BM::tetrahedron_quality(coordinates(c3t3, c->vertex(0)), coordinates(c3t3, c->vertex(1)),
+                              coordinates(c3t3, c->vertex(2)), coordinates(c3t3, c->vertex(3)));
+    if(!(q.min_dihedral_angle < 10.)) continue;
+    bool movable = false;
+    for(int k = 0; k < 4; ++k)
+      if(c3t3.in_dimension(c->vertex(k)) == 3) movable = true;
+    for(int r : {0, c3t3.subdomain_index(c)})
+    {
+      ++count[r].first;
+      if(movable) ++count[r].second;
+    }
+  }
+  return count;
+}
+
+void test_model(const std::string& name, const Model& m, bool strict)
+{
+  std::cout << "== " << name << std::endl;
+  CGAL::Real_timer timer;
+  timer.start();
+  const std::vector<BM::Bubble<K> > sb = BM::place_surface_bubbles(m);
+  const std::vector<BM::Bubble<K> > ib = BM::place_initial_bubbles(m, sb, CGAL::parameters::random_seed(1));
+  std::vector<Point_3> interior;
+  for(const auto& b : ib) interior.push_back(b.center);
+  Model_c3t3 original;
+  const BM::Tetrahedralization_report tr = BM::tetrahedralize_bubbles(m, interior, original);
+  std::cout << "  " << m.number_of_triangles() << " input triangles, " << interior.size()
+            << " initial bubbles (not relaxed), " << tr.number_of_vertices << " vertices, " << tr.number_of_cells
+            << " cells (" << timer.time() << " s)" << std::endl;
+
+  const double bound = 15.;
+  const Surface_state s0 = surface_state(original, bound);
+  // the complex covers every input triangle: patch areas equal the input's
+  std::map<int, double> input_areas;
+  for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+  {
+    const Point_3 p[3] = {m.point(m.triangle(t)[0]), m.point(m.triangle(t)[1]), m.point(m.triangle(t)[2])};
+    input_areas[int(m.patch_of_triangle(t)) + 1] += std::sqrt(CGAL::to_double(CGAL::squared_area(p[0], p[1], p[2])));
+  }
+
+  Model_c3t3 c3t3(original);
+  timer.reset();
+  const BM::Sliver_removal_report r = BM::remove_slivers(c3t3, BM::parameters::sliver_bound(bound));
+  const double seconds = timer.time();
+  std::cout << r << std::endl;
+  check_labels(c3t3);
+  const Surface_state s = surface_state(c3t3, bound);
+  check_kept(s0, s, "perturbation");
+  double worst_area = 0.;
+  for(const auto& pa : input_areas)
+    worst_area = (std::max)(worst_area, std::abs(s.patch_areas.at(pa.first) - pa.second) / pa.second);
+  std::cout << "  every input triangle covered: largest relative difference of a patch's facet area to its input area "
+            << worst_area << std::endl;
+  assert(worst_area < 1e-9);
+  assert(s.under_bound < s0.under_bound && s.under_10 < s0.under_10);
+
+  const Input_angles angles(m);
+  const BM::Mesh_quality_report q0 =
+    BM::compute_c3t3_quality(original, BM::parameters::facet_input_min_angle(std::cref(angles)));
+  const BM::Mesh_quality_report q1 =
+    BM::compute_c3t3_quality(c3t3, BM::parameters::facet_input_min_angle(std::cref(angles)));
+  auto bad0 = cells_under_10(original), bad1 = cells_under_10(c3t3);
+  std::cout << "  share under 10 degrees " << q0.all.share_smallest_dihedral_under[1] << " -> "
+            << q1.all.share_smallest_dihedral_under[1] << ", not at an input angle under 10 degrees "
+            << q0.all.share_under_10_not_at_small_surface_angle << " -> "
+            << q1.all.share_under_10_not_at_small_surface_angle << ", mean smallest dihedral "
+            << q0.all.mean_smallest_dihedral_angle << " -> " << q1.all.mean_smallest_dihedral_angle << std::endl;
+  std::cout << "  tets under 10 degrees: " << bad0[0].first << " -> " << bad1[0].first
+            << "; with a vertex off the surfaces (movable): " << bad0[0].second << " -> " << bad1[0].second
+            << "; the other " << bad1[0].first - bad1[0].second
+            << " have all four vertices on input surfaces, out of reach of moves (" << seconds << " s)" << std::endl;
+  for(const auto& rc : bad1)
+    if(rc.first > 0)
+      std::cout << "    " << m.region_label(std::size_t(rc.first)) << ": " << rc.second.first << " under 10 degrees, "
+                << rc.second.second << " movable" << std::endl;
+  if(strict)
+  {
+    // nearly all the tets a perturbation can reach are fixed
+    assert(bad1[0].second * 4 <= bad0[0].second);
+    Model_c3t3 again(original);
+    BM::remove_slivers(again, BM::parameters::sliver_bound(bound));
+    std::vector<std::array<double, 4> > fa, fb;
+    for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+      fa.push_back({{v->point().x(), v->point().y(), v->point().z(), v->point().weight()}});
+    for(auto v = again.triangulation().finite_vertices_begin(); v != again.triangulation().finite_vertices_end(); ++v)
+      fb.push_back({{v->point().x(), v->point().y(), v->point().z(), v->point().weight()}});
+    assert(fa == fb);
+    assert(surface_state(again, bound).facets == s.facets);
+    std::cout << "  same seed: identical vertices and weights (" << fa.size() << " vertices)" << std::endl;
+
+    // the exuder on this mesh: whatever it does, what must be kept is kept
+    Model_c3t3 exuded(original);
+    const BM::Sliver_removal_report re = BM::remove_slivers(
+      exuded, BM::parameters::exude_slivers(true, BM::parameters::sliver_bound(bound)).maximum_running_time(5.));
+    std::cout << "  with exudation: " << re << std::endl;
+    check_kept(s0, surface_state(exuded, bound), "perturbation and exudation");
+    assert(re.exudation_done || re.exudation_reverted || re.time_limit_reached);
+  }
+}
+
+void test_models(int argc, char** argv)
+{
+  Model layered;
+  BM::make_layered_model(layered);
+  test_model("generated layered model (initial bubbles)", layered, true);
+
+  // real models take 20 s or more each (mostly meshing), beyond this test's
+  // budget: they run when given as arguments, e.g. ../shared/data/geomodels/modelA1.ml
+  if(argc < 2)
+    std::cout << "SKIP: GOCAD models (give .ml files as arguments; modelA1 takes about 25 s, the others minutes)"
+              << std::endl;
+  for(int i = 1; i < argc; ++i)
+  {
+    Model m;
+    BM::IO::read_gocad_model3d(argv[i], m);
+    test_model(argv[i], m, false);
+  }
+}
+
+int main(int argc, char** argv)
+{
+  test_lattice();
+  test_models(argc, argv);
+  return EXIT_SUCCESS;
+}
