@@ -1,0 +1,481 @@
+#!/usr/bin/env python3
+# Copyright (c) 2026 Bubble_mesh_3 contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Peer comparison (issue 7, item 4): TetGen, Gmsh and bubble_mesh_3 on the same
+geological models, on the same machine, in one run.
+
+For each model: export_peer_inputs writes a TetGen PLC (.poly, facet marker =
+patch + 1, one region seed per region) and a Gmsh discrete surface mesh; then
+each mesher runs under a time limit and /usr/bin/time -v (wall time, peak
+resident memory; a crash or an abort is a result, not a failure of this
+script); every output mesh is measured by one tool, bubble_mesh_3_quality, and
+export_peer_inputs --kept-whole counts the input triangles it keeps whole.
+Writes a Markdown and a JSON table and one SVG of side-by-side histograms per
+model. A benchmark, not a test.
+"""
+
+import argparse
+import glob
+import json
+import os
+import re
+import shlex
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+DEFAULT_MODEL = os.path.join(REPO, "examples", "Bubble_mesh_3", "data", "layered_model.obj")
+SHARED_MODELS = os.path.join(REPO, "..", "shared", "data", "geomodels")
+DEBIAN_PYTHON = "/usr/bin/python3"  # sees Debian's python3-gmsh (the pyenv python3 on PATH does not)
+GNU_TIME = "/usr/bin/time"
+
+# (name, kind, TetGen switches or bubble_mesh_3 extra arguments)
+MESHERS = [
+    ("tetgen -pA", "tetgen", "-pA"),
+    ("tetgen -pq1.414/10 -A", "tetgen", "-pq1.414/10A"),
+    ("tetgen -pYA", "tetgen", "-pYA"),
+    ("gmsh Delaunay, surfaces kept", "gmsh", None),
+    ("bubble_mesh_3", "bubble", []),
+    ("bubble_mesh_3 --remesh-surfaces", "bubble", ["--remesh-surfaces"]),
+]
+MESHER_KEYS = ["tetgen-pA", "tetgen-pq", "tetgen-pYA", "gmsh", "bubble", "bubble-remesh"]
+
+
+def fail(msg):
+    sys.stderr.write("compare_peers: error: %s\n" % msg)
+    sys.exit(1)
+
+
+# ---------------------------------------------------------------------------
+# Gmsh worker: runs under Debian's python3 (python3-gmsh)
+
+def gmsh_worker(surf_msh, regions_json, out_msh):
+    """Opens the discrete surfaces, makes one volume per region from its shells
+    (outer shell first), embeds the surfaces inside regions, and meshes the
+    volumes with Gmsh's 3D Delaunay (Mesh.Algorithm3D = 1). The discrete
+    surfaces have no parametrization: Gmsh keeps their triangles as they are."""
+    import gmsh  # noqa: imported here: only Debian's python3 has it
+    with open(regions_json) as f:
+        info = json.load(f)
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 1)
+        gmsh.open(surf_msh)
+        for r in info["regions"]:
+            loops = [gmsh.model.geo.addSurfaceLoop(shell) for shell in r["shells"]]
+            gmsh.model.geo.addVolume(loops, r["index"])
+        gmsh.model.geo.synchronize()
+        for r in info["regions"]:
+            if r["inside"]:
+                gmsh.model.mesh.embed(2, r["inside"], 3, r["index"])
+            gmsh.model.addPhysicalGroup(3, [r["index"]], r["index"])
+            gmsh.model.setPhysicalName(3, r["index"], r["name"])
+        present = set(tag for dim, tag in gmsh.model.getEntities(2))
+        for p in info["patches"]:
+            if p["tag"] in present:
+                gmsh.model.addPhysicalGroup(2, [p["tag"]], p["tag"])
+                gmsh.model.setPhysicalName(2, p["tag"], p["name"])
+        gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+        gmsh.option.setNumber("Mesh.MshFileVersion", 4.1)
+        start = time.perf_counter()
+        gmsh.model.mesh.generate(3)
+        print("gmsh_worker: generate(3) took %.3f s" % (time.perf_counter() - start))
+        gmsh.write(out_msh)
+    except Exception as e:  # Gmsh raises a plain Exception with its last error
+        sys.stderr.write("gmsh_worker: error: %s\n" % e)
+        return 1
+    finally:
+        gmsh.finalize()
+    return 0
+
+
+# ---------------------------------------------------------------------------
+# running a program with a time limit, wall time and peak memory
+
+def run(cmd, cwd, timeout, log_path, use_time=True):
+    """Runs cmd in its own process group; returns a dict with status ('ok',
+    'timeout', 'crash', 'error'), wall seconds, peak RSS (MiB or None), the
+    exit code or signal, and a one-line reason."""
+    time_file = log_path + ".time"
+    full = ([GNU_TIME, "-v", "-o", time_file] if use_time else []) + cmd
+    with open(log_path, "w") as log:
+        log.write("$ cd %s && %s\n" % (shlex.quote(cwd), " ".join(shlex.quote(c) for c in cmd)))
+        log.flush()
+        start = time.perf_counter()
+        proc = subprocess.Popen(full, cwd=cwd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            rc = proc.wait(timeout=timeout)
+            timed_out = False
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            rc = proc.wait()
+            timed_out = True
+        wall = time.perf_counter() - start
+    res = {"status": "ok", "wall_s": wall, "peak_mib": None, "returncode": rc, "reason": ""}
+    signum = None
+    if use_time and os.path.exists(time_file):
+        with open(time_file) as f:
+            text = f.read()
+        m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
+        if m:
+            res["peak_mib"] = int(m.group(1)) / 1024.0
+        m = re.search(r"Command terminated by signal (\d+)", text)
+        if m:
+            signum = int(m.group(1))
+        m = re.search(r"Command exited with non-zero status (\d+)", text)
+        if m:
+            rc = int(m.group(1))
+    elif rc < 0:
+        signum = -rc
+    if timed_out:
+        res["status"] = "timeout"
+        res["reason"] = "timeout after %g s (killed)" % timeout
+        res["peak_mib"] = None  # the killed /usr/bin/time wrote nothing reliable
+    elif signum is not None:
+        try:
+            name = signal.Signals(signum).name
+        except ValueError:
+            name = "signal %d" % signum
+        res["status"] = "crash"
+        res["reason"] = "%s%s" % (name, _last_error_line(log_path, ": "))
+    elif rc != 0:
+        res["status"] = "error"
+        res["reason"] = "exit %d%s" % (rc, _last_error_line(log_path, ": "))
+    return res
+
+
+def _last_error_line(log_path, prefix):
+    """The most telling line of a log: an assertion, an error, else the last line."""
+    try:
+        with open(log_path, errors="replace") as f:
+            lines = [l.strip() for l in f if l.strip() and not l.startswith("$ ")]
+    except OSError:
+        return ""
+    for pattern in (r"Assertion", r"[Ee]rror", r"[Ee]xception", r"what\(\)"):
+        for l in reversed(lines):
+            if re.search(pattern, l):
+                l = re.sub(r"^.*?(tetgen\.cxx:\d+: )", r"\1", l)
+                return prefix + l[:200]
+    return prefix + lines[-1][:200] if lines else ""
+
+
+def region_volume_error(region_volumes, quality_regions):
+    """The largest relative error of a region's volume in the mesh (tets labelled with its index)
+    against the model; 1 for a region the mesh does not have."""
+    meshed = {q["region"]: q["volume"] for q in quality_regions if isinstance(q.get("region"), int)}
+    worst = 0.0
+    for index, volume in region_volumes.items():
+        v = meshed.get(index)
+        worst = max(worst, 1.0 if v is None else abs(v - volume) / volume)
+    return worst
+
+
+def _own_time(kind, log_path):
+    """The meshing time a peer reports itself (TetGen: CPU seconds after reading its input; Gmsh:
+    wall seconds of generate(3)), or None."""
+    pattern = {"tetgen": r"Total running seconds:\s*([0-9.eE+-]+)",
+               "gmsh": r"gmsh_worker: generate\(3\) took ([0-9.eE+-]+) s"}.get(kind)
+    if not pattern:
+        return None
+    try:
+        with open(log_path, errors="replace") as f:
+            m = re.search(pattern, f.read())
+    except OSError:
+        return None
+    return float(m.group(1)) if m else None
+
+
+# ---------------------------------------------------------------------------
+
+def find_tools(build_dir):
+    tools = {
+        "bubble_mesh_3": os.path.join(build_dir, "tools", "bubble_mesh_3"),
+        "quality": os.path.join(build_dir, "tools", "bubble_mesh_3_quality"),
+        "export": os.path.join(build_dir, "bench", "export_peer_inputs"),
+    }
+    missing = [p for p in tools.values() if not os.access(p, os.X_OK)]
+    if missing:
+        fail("missing program(s): %s\nbuild them with:\n  cmake -S %s -B %s -DCMAKE_BUILD_TYPE=Release "
+             "-DBUBBLE_MESH_3_BUILD_BENCH=ON\n  make -C %s bubble_mesh_3 bubble_mesh_3_quality export_peer_inputs"
+             % (", ".join(missing), REPO, build_dir, build_dir))
+    return tools
+
+
+def peer_availability(tools):
+    """mesher kind -> None if available, else why not."""
+    avail = {}
+    avail["tetgen"] = None if shutil.which("tetgen") else "tetgen not on PATH (Debian: apt-get install tetgen)"
+    if not os.access(DEBIAN_PYTHON, os.X_OK):
+        avail["gmsh"] = "%s not found" % DEBIAN_PYTHON
+    else:
+        ok = subprocess.run([DEBIAN_PYTHON, "-c", "import gmsh"], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL).returncode == 0
+        avail["gmsh"] = None if ok else "python3-gmsh not importable by %s (Debian: apt-get install python3-gmsh)" % DEBIAN_PYTHON
+    try:
+        help_text = subprocess.run([tools["bubble_mesh_3"], "--help"], stdout=subprocess.PIPE,
+                                   stderr=subprocess.STDOUT, universal_newlines=True, timeout=30).stdout
+    except (OSError, subprocess.TimeoutExpired):
+        help_text = ""
+    if re.search(r"(^|\s)-o[\s,]", help_text):
+        avail["bubble"] = None
+        avail["bubble-remesh"] = None if "--remesh-surfaces" in help_text else \
+            "not available (bubble_mesh_3 --help lists no --remesh-surfaces yet)"
+    else:
+        avail["bubble"] = avail["bubble-remesh"] = "not available (bubble_mesh_3 --help lists no -o: it cannot mesh yet)"
+    return avail
+
+
+def model_name(path):
+    return os.path.splitext(os.path.basename(path))[0]
+
+
+def mesher_output(kind, workdir, base):
+    if kind == "tetgen":
+        return os.path.join(workdir, base + ".1.ele")
+    if kind == "gmsh":
+        return os.path.join(workdir, base + ".msh")
+    return os.path.join(workdir, base + ".mesh")
+
+
+def run_model(model, args, tools, avail, out_dir, selected, deadline):
+    name = model_name(model)
+    mdir = os.path.join(out_dir, name)
+    os.makedirs(mdir, exist_ok=True)
+    rows = []
+    print("== %s" % model, flush=True)
+
+    # the model's own numbers (volume) from bubble_mesh_3 --check
+    summary_path = os.path.join(mdir, "summary.json")
+    r = run([tools["bubble_mesh_3"], os.path.abspath(model), "--check", "-q", "--summary-json", summary_path],
+            mdir, args.timeout, os.path.join(mdir, "check.log"), use_time=False)
+    region_volumes = None  # region index -> volume
+    if r["status"] == "ok":
+        with open(summary_path) as f:
+            s = json.load(f)
+        region_volumes = {reg["index"]: reg["volume"] for reg in s.get("regions", []) if reg.get("volume")}
+        triangles = s.get("number_of_triangles")
+    else:
+        print("   bubble_mesh_3 --check: %s %s" % (r["status"], r["reason"]))
+        triangles = None
+
+    r = run([tools["export"], os.path.abspath(model), "--out-dir", mdir, "--name", name], mdir, args.timeout,
+            os.path.join(mdir, "export.log"), use_time=False)
+    export_ok = os.path.exists(os.path.join(mdir, name + ".poly"))
+    if r["status"] != "ok":
+        print("   export_peer_inputs: %s %s" % (r["status"], r["reason"]))
+
+    for key, (label, kind, extra) in zip(MESHER_KEYS, MESHERS):
+        if key not in selected:
+            continue
+        row = {"model": name, "mesher": label, "key": key, "status": "", "error": "", "tets": None,
+               "vertices": None, "time_s": None, "peak_mib": None, "min_dihedral": None,
+               "share_under_10": None, "mean_smallest_dihedral": None, "aspect_ratio_median": None,
+               "triangles": triangles, "kept_whole": None, "volume_rel_error": None, "mesh": None, "own_time_s": None,
+               "command": ""}
+        rows.append(row)
+        why_not = avail.get(kind if kind != "bubble" else key)
+        if why_not:
+            row["status"] = "not available"
+            row["error"] = why_not
+            print("   %-34s %s" % (label, why_not), flush=True)
+            continue
+        remaining = deadline - time.perf_counter()
+        if remaining < 5.0:
+            row["status"] = "skipped"
+            row["error"] = "skipped: the time budget (--budget %g s) is used up" % args.budget
+            print("   %-34s %s" % (label, row["error"]), flush=True)
+            continue
+        run_timeout = min(args.timeout, remaining)
+        wdir = os.path.join(mdir, key)
+        if os.path.isdir(wdir):
+            shutil.rmtree(wdir)
+        os.makedirs(wdir)
+        out = mesher_output(kind, wdir, name)
+        if kind == "tetgen":
+            if not export_ok:
+                row["status"], row["error"] = "error", "no TetGen input (export_peer_inputs failed)"
+                continue
+            os.symlink(os.path.join("..", name + ".poly"), os.path.join(wdir, name + ".poly"))
+            cmd = ["tetgen", extra, name + ".poly"]
+        elif kind == "gmsh":
+            if not export_ok:
+                row["status"], row["error"] = "error", "no Gmsh input (export_peer_inputs failed)"
+                continue
+            cmd = [DEBIAN_PYTHON, os.path.abspath(__file__), "--gmsh-worker",
+                   os.path.join(mdir, name + ".surf.msh"), os.path.join(mdir, name + ".regions.json"), out]
+        else:
+            cmd = [tools["bubble_mesh_3"], os.path.abspath(model), "-o", out] + extra + args.bubble_args
+        row["command"] = " ".join(shlex.quote(c) for c in cmd)
+        res = run(cmd, wdir, run_timeout, os.path.join(wdir, "run.log"))
+        row["status"] = res["status"]
+        row["error"] = res["reason"]
+        row["time_s"] = res["wall_s"]
+        row["peak_mib"] = res["peak_mib"]
+        row["own_time_s"] = _own_time(kind, os.path.join(wdir, "run.log"))
+        if res["status"] == "ok" and not os.path.exists(out):
+            row["status"], row["error"] = "error", "no output mesh %s" % out
+        print("   %-34s %-8s %7.2f s %s" % (label, row["status"], res["wall_s"], row["error"]), flush=True)
+        if row["status"] != "ok":
+            continue
+        row["mesh"] = out
+        qjson = os.path.join(wdir, "quality.json")
+        q = run([tools["quality"], out, "--json", qjson], wdir, args.timeout, os.path.join(wdir, "quality.log"),
+                use_time=False)
+        if q["status"] == "ok":
+            with open(qjson) as f:
+                rep = json.load(f)
+            a = rep["all"]
+            row["tets"] = a["tetrahedra"]
+            row["vertices"] = rep.get("points", a.get("vertices"))
+            row["min_dihedral"] = a["dihedral_angle"]["min"]
+            row["share_under_10"] = a["smallest_dihedral_angle"]["share_under_10"]
+            row["mean_smallest_dihedral"] = a["smallest_dihedral_angle"]["mean"]
+            row["aspect_ratio_median"] = a["aspect_ratio"]["median"]
+            if region_volumes:
+                row["volume_rel_error"] = region_volume_error(region_volumes, rep.get("regions", []))
+        else:
+            row["error"] = (row["error"] + "; " if row["error"] else "") + "quality: " + q["reason"]
+        kjson = os.path.join(wdir, "kept_whole.json")
+        k = run([tools["export"], os.path.abspath(model), "--kept-whole", out, "--json", kjson], wdir,
+                args.timeout, os.path.join(wdir, "kept_whole.log"), use_time=False)
+        if k["status"] == "ok":
+            with open(kjson) as f:
+                kw = json.load(f)
+            row["kept_whole"] = kw["kept_whole"]
+            row["triangles"] = kw["triangles"]
+
+    # side-by-side histograms of the meshes that were measured
+    measured = [r for r in rows if r["tets"] is not None]
+    svg = None
+    if measured:
+        svg = os.path.join(out_dir, name + ".svg")
+        names = [r["mesher"].replace(",", "") for r in measured]
+        s = run([tools["quality"]] + [r["mesh"] for r in measured] + ["--names", ",".join(names), "--svg", svg],
+                mdir, args.timeout, os.path.join(mdir, "histograms.log"), use_time=False)
+        if s["status"] != "ok":
+            print("   histograms: %s %s" % (s["status"], s["reason"]))
+            svg = None
+    return rows, svg
+
+
+# ---------------------------------------------------------------------------
+# tables
+
+def fmt(v, spec):
+    return "-" if v is None else format(v, spec)
+
+
+def markdown_table(rows):
+    head = ("| model | mesher | tets | vertices | time (s) | peak memory (MiB) | min dihedral | % under 10 deg "
+            "| mean smallest dihedral | AR median | input triangles kept whole | region volume error | error |")
+    lines = [head, "|" + "---|" * 13]
+    for r in rows:
+        kept = "-"
+        if r["kept_whole"] is not None and r["triangles"]:
+            kept = "%d / %d (%.1f %%)" % (r["kept_whole"], r["triangles"], 100.0 * r["kept_whole"] / r["triangles"])
+        err = ("crash: " + r["error"]) if r["status"] == "crash" else r["error"]
+        err = err.replace("|", "\\|")
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["model"], r["mesher"], fmt(r["tets"], "d"), fmt(r["vertices"], "d"), fmt(r["time_s"], ".2f"),
+            fmt(r["peak_mib"], ".0f"), fmt(r["min_dihedral"], ".3g"),
+            fmt(None if r["share_under_10"] is None else 100.0 * r["share_under_10"], ".1f"),
+            fmt(r["mean_smallest_dihedral"], ".2f"), fmt(r["aspect_ratio_median"], ".2f"), kept,
+            fmt(r["volume_rel_error"], ".1e"), err))
+    return "\n".join(lines) + "\n"
+
+
+def default_models():
+    models = [DEFAULT_MODEL]
+    shared = os.path.normpath(SHARED_MODELS)
+    if os.path.isdir(shared):
+        models += sorted(glob.glob(os.path.join(shared, "*.ml")))
+    else:
+        print("compare_peers: %s not found: only the bundled model" % shared)
+    return models
+
+
+def main():
+    if len(sys.argv) >= 2 and sys.argv[1] == "--gmsh-worker":
+        if len(sys.argv) != 5:
+            fail("--gmsh-worker SURF.msh REGIONS.json OUT.msh")
+        sys.exit(gmsh_worker(*sys.argv[2:5]))
+
+    p = argparse.ArgumentParser(
+        prog="compare_peers",
+        description="Runs TetGen (-pA, -pq1.414/10 -A, -pYA), Gmsh's 3D Delaunay with the input surfaces kept, "
+                    "and bubble_mesh_3 (surfaces kept, and --remesh-surfaces) on the same models, measures every "
+                    "mesh with bubble_mesh_3_quality, and writes a Markdown + JSON table and side-by-side SVG "
+                    "histograms per model.",
+        epilog="Default models: the bundled examples/Bubble_mesh_3/data/layered_model.obj and every .ml in "
+               "../shared/data/geomodels when present. Needs tetgen, /usr/bin/python3 with python3-gmsh, "
+               "/usr/bin/time (Debian package 'time'), and the programs bubble_mesh_3, bubble_mesh_3_quality, "
+               "export_peer_inputs in BUILD_DIR (cmake -DBUBBLE_MESH_3_BUILD_BENCH=ON). A mesher that is missing, "
+               "crashes or times out is a row of the table, not a failure.")
+    p.add_argument("models", nargs="*", metavar="MODEL", help=".ml, .ts or .obj geological models")
+    p.add_argument("--build-dir", default=os.path.join(REPO, "build-bench"),
+                   help="CMake build folder with the programs (default: %(default)s)")
+    p.add_argument("--out", default=None, help="output folder (default: BUILD_DIR/compare_peers)")
+    p.add_argument("--timeout", type=float, default=120.0, help="time limit per run in seconds (default: %(default)s)")
+    p.add_argument("--budget", type=float, default=840.0,
+                   help="time budget of the whole run in seconds: a run gets at most what is left, and runs "
+                        "are skipped (and say so) once it is used up (default: %(default)s)")
+    p.add_argument("--meshers", default=",".join(MESHER_KEYS),
+                   help="comma-separated subset of: %s (default: all)" % ",".join(MESHER_KEYS))
+    p.add_argument("--bubble-args", default="", help="extra arguments for bubble_mesh_3 (quoted, e.g. '--threads 2')")
+    args = p.parse_args()
+    args.bubble_args = shlex.split(args.bubble_args)
+
+    selected = [s.strip() for s in args.meshers.split(",") if s.strip()]
+    bad = [s for s in selected if s not in MESHER_KEYS]
+    if bad:
+        fail("unknown mesher(s) %s; known: %s" % (", ".join(bad), ", ".join(MESHER_KEYS)))
+    if not os.access(GNU_TIME, os.X_OK):
+        fail("%s is missing: peak memory needs GNU time (Debian: apt-get install time)" % GNU_TIME)
+    models = args.models or default_models()
+    for m in models:
+        if not os.path.isfile(m):
+            fail("no such model file: %s" % m)
+    build_dir = os.path.abspath(args.build_dir)
+    tools = find_tools(build_dir)
+    out_dir = os.path.abspath(args.out or os.path.join(build_dir, "compare_peers"))
+    os.makedirs(out_dir, exist_ok=True)
+    avail = peer_availability(tools)
+
+    command = " ".join(shlex.quote(a) for a in ["bench/compare_peers"] + sys.argv[1:])
+    print("reproduce with: %s" % command)
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
+    start = time.perf_counter()
+    deadline = start + args.budget
+    rows, svgs = [], {}
+    for m in models:
+        r, svg = run_model(m, args, tools, avail, out_dir, selected, deadline)
+        rows += r
+        if svg:
+            svgs[model_name(m)] = svg
+    total = time.perf_counter() - start
+
+    info = {"command": command, "machine": os.uname().nodename, "cpus": os.cpu_count(),
+            "load_average_at_start": load, "timeout_s": args.timeout, "budget_s": args.budget, "total_s": total,
+            "tetgen": shutil.which("tetgen"), "rows": rows, "histograms": svgs}
+    with open(os.path.join(out_dir, "compare_peers.json"), "w") as f:
+        json.dump(info, f, indent=1)
+    md = ["# compare_peers\n", "Command: `%s` (total %.0f s, %s CPUs, load average %.1f at start, "
+          "time limit %g s per run, budget %g s)\n" % (command, total, os.cpu_count(), load or 0.0, args.timeout, args.budget), "",
+          markdown_table(rows), ""]
+    for n, s in svgs.items():
+        md.append("Histograms of %s: %s\n" % (n, s))
+    with open(os.path.join(out_dir, "compare_peers.md"), "w") as f:
+        f.write("\n".join(md))
+    print()
+    print(markdown_table(rows))
+    print("wrote %s, %s and %d SVG file(s); total %.0f s" % (
+        os.path.join(out_dir, "compare_peers.md"), os.path.join(out_dir, "compare_peers.json"), len(svgs), total))
+    print("reproduce with: %s" % command)
+
+
+if __name__ == "__main__":
+    main()
