@@ -8,13 +8,22 @@
 #include <CGAL/Bubble_mesh_3/Cubic_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
 #include <CGAL/Bubble_mesh_3/control_bubble_population.h>
+#include <CGAL/Bubble_mesh_3/Surface_bubble_sizing_field.h>
+#include <CGAL/Bubble_mesh_3/make_layered_model.h>
+#include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
+#include <CGAL/Bubble_mesh_3/place_surface_bubbles.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Random.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <array>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -150,17 +159,19 @@ static void test_lattice_at_rest()
   };
   const BM::Relaxation_report rep =
     BM::relax_bubbles(cube, surface, interior, Constant_sizing{r},
-                      params::number_of_population_rounds(0, params::displacement_tolerance(
-                                                               1e-12, CGAL::parameters::visitor(watch)
-                                                                        .number_of_iterations(50))));
+                      // tolerance 0: all 50 steps run
+                      params::number_of_population_rounds(
+                        0, params::displacement_tolerance(
+                             0., params::number_of_relaxation_steps(50, CGAL::parameters::visitor(watch)))));
   assert(interior.size() == before.size());
   double moved = 0.;
   for(std::size_t i = 0; i < interior.size(); ++i) moved = (std::max)(moved, dist(interior[i], before[i]));
   std::cout << "lattice at rest: " << interior.size() << " bubbles, " << rep.steps
             << " steps, largest move " << moved << " (radius " << r << "), " << calls << " visitor calls"
             << std::endl;
+  assert(rep.steps == 50);
   assert(moved < 1e-12 * r);
-  assert(peak < 1e-12 && calls > 0);
+  assert(peak < 1e-12 && calls > 50);
 }
 
 // a deterministic cloud of `count` points in [m, L-m]^3
@@ -274,6 +285,80 @@ static void test_cloud(std::vector<Bubble>& result_1, std::vector<Bubble>& resul
   }
 }
 
+// -- 6. the default layered model: placement, then relaxation; checked with
+// CGAL::Side_of_triangle_mesh on each region's closed boundary (the dynamics
+// use their own ray parity)
+static void test_layered_model()
+{
+  Model m;
+  BM::make_layered_model(m);
+  const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
+  const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
+  const std::vector<Bubble> start = BM::place_initial_bubbles(m, surface, sizing);
+  std::cout << "default layered model: " << m.number_of_regions() << " regions, " << surface.size()
+            << " surface bubbles, " << start.size() << " initial interior bubbles" << std::endl;
+
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  std::vector<std::unique_ptr<Mesh> > meshes(m.number_of_regions() + 1);
+  std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K> > > side(m.number_of_regions() + 1);
+  for(std::size_t r = 1; r <= m.number_of_regions(); ++r)
+  {
+    std::vector<std::array<std::size_t, 3> > faces;
+    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+    {
+      const auto& patch = m.patch(m.patch_of_triangle(t));
+      if(patch.is_inside_region() || (patch.positive_region != r && patch.negative_region != r)) continue;
+      std::array<std::size_t, 3> f = m.triangle(t);
+      if(patch.positive_region == r) std::swap(f[1], f[2]); // outward
+      faces.push_back(f);
+    }
+    meshes[r].reset(new Mesh);
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(m.points(), faces, *meshes[r]);
+    side[r].reset(new CGAL::Side_of_triangle_mesh<Mesh, K>(*meshes[r]));
+  }
+
+  std::vector<Bubble> results[2];
+  for(std::size_t threads : {std::size_t(1), std::size_t(2)})
+  {
+    std::vector<Bubble>& interior = results[threads - 1];
+    interior = start;
+    const BM::Relaxation_report rep =
+      BM::relax_bubbles(m, surface, interior, sizing, params::number_of_threads(threads));
+    std::size_t outside = 0, settled = 0, cycling = 0;
+    for(const Bubble& b : interior)
+      if((*side[b.region])(b.center) != CGAL::ON_BOUNDED_SIDE) ++outside;
+    for(const BM::Region_relaxation_report& r : rep.regions)
+    {
+      settled += r.population_settled;
+      cycling += r.stopped_cycling;
+    }
+    std::cout << "  " << threads << " thread(s): " << rep.population << " interior bubbles (" << rep.added
+              << " added, " << rep.removed << " removed, " << rep.rejected << " rejected), " << rep.steps
+              << " steps over " << rep.regions.size() << " regions (" << settled << " settled, " << cycling
+              << " stopped by the cycle guard), converged " << rep.converged() << ", " << rep.seconds << " s"
+              << std::endl;
+    std::cout << "  outside their region: " << outside << "; overlap ratio below 10: " << rep.below
+              << ", in [10,14]: " << rep.inside << ", above 14: " << rep.above << " -> "
+              << 100. * rep.share_inside_bounds() << " % inside" << std::endl;
+    print_histogram(rep.overlap_histogram);
+    assert(outside == 0);
+    assert(rep.converged());
+    assert(settled + cycling == rep.regions.size());
+    assert(rep.share_inside_bounds() >= 0.95);
+  }
+  std::size_t differ = results[0].size() == results[1].size() ? 0 : 1;
+  for(std::size_t i = 0; differ == 0 && i < results[0].size(); ++i)
+  {
+    const double a[4] = {results[0][i].center.x(), results[0][i].center.y(), results[0][i].center.z(),
+                         results[0][i].radius};
+    const double b[4] = {results[1][i].center.x(), results[1][i].center.y(), results[1][i].center.z(),
+                         results[1][i].radius};
+    if(std::memcmp(a, b, sizeof a) != 0) ++differ;
+  }
+  std::cout << "  1 vs 2 threads (regions run concurrently): " << (differ ? "differ" : "bit-identical") << std::endl;
+  assert(differ == 0);
+}
+
 int main()
 {
   test_force_law();
@@ -292,5 +377,6 @@ int main()
   }
   std::cout << "1 vs 2 threads: " << one.size() << " bubbles, " << differ << " differ bit-wise" << std::endl;
   assert(differ == 0);
+  test_layered_model();
   return EXIT_SUCCESS;
 }

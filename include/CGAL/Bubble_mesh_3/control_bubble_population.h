@@ -30,8 +30,6 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
-#include <iostream>
-#include <atomic>
 
 namespace CGAL {
 namespace Bubble_mesh_3 {
@@ -120,7 +118,7 @@ struct Dynamics_settings
   double insertion_clearance = 0.7;
   double skin = 0.15;
   double max_step = 0.125;
-  double radius_update = 0.05;
+  double radius_update = 0.1;
   std::size_t threads = 0;
   Confinement_settings confinement;
 };
@@ -138,7 +136,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.time_step = choose_parameter(get_parameter(np, internal_np::time_step), 0.2 * std::sqrt(s.mass / stiffness));
   s.tolerance = choose_parameter(get_parameter(np, internal_np::displacement_tolerance), 1e-3);
   s.round_tolerance = choose_parameter(get_parameter(np, internal_np::round_displacement_tolerance), 1e-2);
-  s.step_budget = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(2000));
+  s.step_budget = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), std::size_t(2000));
   s.min_overlap = choose_parameter(get_parameter(np, internal_np::min_overlap_ratio), 10.);
   s.max_overlap = choose_parameter(get_parameter(np, internal_np::max_overlap_ratio), 14.);
   s.population_rounds = choose_parameter(get_parameter(np, internal_np::number_of_population_rounds), std::size_t(12));
@@ -146,7 +144,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.insertion_clearance = choose_parameter(get_parameter(np, internal_np::insertion_clearance), 0.7);
   s.skin = choose_parameter(get_parameter(np, internal_np::neighbor_skin), 0.15);
   s.max_step = choose_parameter(get_parameter(np, internal_np::max_step_ratio), 0.125);
-  s.radius_update = choose_parameter(get_parameter(np, internal_np::radius_update_ratio), 0.05);
+  s.radius_update = choose_parameter(get_parameter(np, internal_np::radius_update_ratio), 0.1);
   s.threads = choose_parameter(get_parameter(np, internal_np::dynamics_threads), std::size_t(0));
   s.confinement.ball_margin = choose_parameter(get_parameter(np, internal_np::diametral_ball_margin), 0.02);
   s.confinement.max_ball_ratio = choose_parameter(get_parameter(np, internal_np::max_protected_ball_ratio), 3.);
@@ -234,12 +232,10 @@ struct Bubble_system
     x.push_back(px); y.push_back(py); z.push_back(pz); r.push_back(pr); key.push_back(k);
   }
 
-  // sets up `grid` over the region with cells of `cell` and files every bubble
-  void fill_grid(Neighbor_grid& grid, double cell) const
+  // files every bubble in `grid`, for queries reaching at most `reach` times the sum of radii
+  void fill_grid(Bubble_grid& grid, double reach) const
   {
-    grid.set_domain(box[0] - cell, box[1] - cell, box[2] - cell, box[3] + cell, box[4] + cell, box[5] + cell,
-                    cell, 4 * size() + 64);
-    grid.build(x.data(), y.data(), z.data(), size());
+    grid.build(x.data(), y.data(), z.data(), r.data(), size(), box, reach);
   }
 
   // orders the free bubbles along the grid's cells, so that neighbours sit close in memory
@@ -340,7 +336,7 @@ make_bubble_systems(const Geological_model_3<K>& model, const std::vector<Bubble
           if(s.confinement->place(p, rad) == Confinement_result::REJECTED) continue;
           px[k] = p[0]; py[k] = p[1]; pz[k] = p[2];
           prad[k] = sizing_at<K>(sizing, p[0], p[1], p[2], reg);
-          pclear[k] = s.confinement->clearance(p);
+          pclear[k] = s.confinement->clearance(p, prad[k]);
           ok[k] = prad[k] > 0.;
         }
       });
@@ -377,7 +373,7 @@ at rest gives 12 + 6 (3 - 2 sqrt 2) = 13.03 (the 6 second neighbours at
 2 sqrt 2 r still add 0.17 each), a random close packing about 11.
 */
 template <class ConcurrencyTag, class K>
-std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Neighbor_grid& grid, double r_max)
+std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Bubble_grid& grid)
 {
   std::vector<double> alpha(s.n_free, 0.);
   for_each_block<ConcurrencyTag>(s.n_free, 256, [&](std::size_t b, std::size_t e) {
@@ -385,7 +381,7 @@ std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Neighbor_gri
     {
       const double xi = s.x[i], yi = s.y[i], zi = s.z[i], ri = s.r[i];
       double sum = 0.;
-      grid.for_each_near(xi, yi, zi, 2. * ri + r_max, [&](std::size_t j) {
+      grid.for_each_near(xi, yi, zi, 2. * ri, 1., [&](std::size_t j) {
         if(j == i) return;
         const double dx = s.x[j] - xi, dy = s.y[j] - yi, dz = s.z[j] - zi;
         const double reach = 2. * ri + s.r[j];
@@ -401,10 +397,9 @@ std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Neighbor_gri
 template <class ConcurrencyTag, class K>
 std::vector<double> overlap_ratios(const Bubble_system<K>& s)
 {
-  const double r_max = s.max_radius();
-  Neighbor_grid grid;
-  s.fill_grid(grid, 3. * r_max);
-  return overlap_ratios<ConcurrencyTag>(s, grid, r_max);
+  Bubble_grid grid;
+  s.fill_grid(grid, 1.5);
+  return overlap_ratios<ConcurrencyTag>(s, grid);
 }
 
 // 32 directions spread evenly over the sphere (golden-angle spiral), the candidate gaps
@@ -448,11 +443,9 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
   Population_change change;
   const std::size_t n = s.n_free, total = s.size();
   if(n == 0) return change;
-  double r_max = s.max_radius();
-  Neighbor_grid grid;
-  const double cell = 3. * r_max;
-  s.fill_grid(grid, cell);
-  std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s, grid, r_max);
+  Bubble_grid grid;
+  s.fill_grid(grid, 1.5);
+  std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s, grid);
 
   // -- deletion
   std::vector<char> keep(n, 1), near_deleted(n, 0);
@@ -465,7 +458,7 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
     if(!(alpha[i] > upper)) continue;
     keep[i] = 0;
     ++change.removed;
-    grid.for_each_near(s.x[i], s.y[i], s.z[i], 2. * r_max + s.r[i], [&](std::size_t j) {
+    grid.for_each_near(s.x[i], s.y[i], s.z[i], s.r[i], 2., [&](std::size_t j) {
       if(j == i || j >= n || !keep[j]) return;
       const double dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i], dz = s.z[j] - s.z[i];
       const double reach = 2. * s.r[j] + s.r[i];
@@ -498,18 +491,17 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
     const double xi = s.x[i], yi = s.y[i], zi = s.z[i], ri = s.r[i];
     std::vector<std::pair<double, std::size_t> > candidates;
     std::vector<std::array<double, 4> > spots;
+    // the field varies on the scale of the mesh size: the parent's radius is
+    // good enough to compare gaps; the chosen one reads its own radius
+    const double rn = ri;
     for(std::size_t d = 0; d < dirs.size(); ++d)
     {
-      // radius where the new bubble will be, then the touching position for it
-      const double rn = sizing_at<K>(sizing, xi + 2. * ri * dirs[d][0], yi + 2. * ri * dirs[d][1],
-                                     zi + 2. * ri * dirs[d][2], s.region);
-      if(!(rn > 0.)) continue;
       for(double reach : gap_distances)
       {
         const double q[3] = {xi + reach * (ri + rn) * dirs[d][0], yi + reach * (ri + rn) * dirs[d][1],
                              zi + reach * (ri + rn) * dirs[d][2]};
         double clear = 1.5;
-        grid.for_each_near(q[0], q[1], q[2], 1.5 * (rn + r_max), [&](std::size_t j) {
+        grid.for_each_near(q[0], q[1], q[2], 1.5 * rn, 1.5, [&](std::size_t j) {
           if(!alive(j)) return;
           const double dx = px(j) - q[0], dy = py(j) - q[1], dz = pz(j) - q[2];
           clear = (std::min)(clear, std::sqrt(dx * dx + dy * dy + dz * dz) / (rn + pr(j)));
@@ -526,22 +518,17 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
                        return a.first > b.first;
                      });
     const double from[3] = {xi, yi, zi};
-    static std::atomic<int> nocand{0}, allrej{0}, okc{0}, inball{0}, cross{0};
-    if(candidates.empty()) ++nocand;
-    bool okk = false;
     for(const auto& c : candidates)
     {
-      const std::array<double, 4>& q = spots[c.second];
-      if(s.confinement->deepest_ball(q.data()) != (std::numeric_limits<std::size_t>::max)()) ++inball; else if(s.confinement->crosses(from, q.data())) ++cross;
-      if(!s.confinement->accepts(from, q.data())) continue;
-      okk = true;
+      std::array<double, 4>& q = spots[c.second];
+      q[3] = sizing_at<K>(sizing, q[0], q[1], q[2], s.region);
+      if(!(q[3] > 0.) || !s.confinement->accepts(from, q.data(), q[3])) continue;
       const std::size_t id = total + nx.size();
       nx.push_back(q[0]); ny.push_back(q[1]); nz.push_back(q[2]); nr.push_back(q[3]);
-      nclear.push_back(s.confinement->clearance(q.data()));
-      grid.insert(id, q[0], q[1], q[2]);
-      r_max = (std::max)(r_max, q[3]);
+      nclear.push_back(s.confinement->clearance(q.data(), q[3]));
+      grid.insert(id, q[0], q[1], q[2], q[3]);
       // the new bubble counts for its free neighbours at once
-      grid.for_each_near(q[0], q[1], q[2], 2. * r_max + q[3], [&](std::size_t j) {
+      grid.for_each_near(q[0], q[1], q[2], q[3], 2., [&](std::size_t j) {
         if(j >= n || !keep[j]) return;
         const double dx = s.x[j] - q[0], dy = s.y[j] - q[1], dz = s.z[j] - q[2];
         const double reach = 2. * s.r[j] + q[3];
@@ -551,8 +538,6 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
       ++change.added;
       break;
     }
-    if(!candidates.empty() && !okk) ++allrej; if(okk) ++okc;
-    if(std::getenv("BMDEBUG")) std::cerr << "ins nocand " << nocand << " allrej " << allrej << " ok " << okc << " cand-in-ball " << inball << " cand-cross " << cross << "\n";
   }
   if(change.added + change.removed > 0) s.replace_free(keep, nx, ny, nz, nr, nclear);
   return change;

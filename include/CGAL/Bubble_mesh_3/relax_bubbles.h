@@ -217,8 +217,8 @@ public:
         const double qx = p[0] - s_.cx[i], qy = p[1] - s_.cy[i], qz = p[2] - s_.cz[i];
         if(qx * qx + qy * qy + qz * qz >= s_.clearance[i] * s_.clearance[i] || s_.clearance[i] <= 0.)
         {
-          double nrm[3] = {0., 0., 0.};
-          const Confinement_result res = conf.confine(from, p, ri, nrm);
+          double nrm[3] = {0., 0., 0.}, clear = 0.;
+          const Confinement_result res = conf.confine(from, p, ri, nrm, clear);
           if(res == Confinement_result::REJECTED)
           {
             p[0] = from[0]; p[1] = from[1]; p[2] = from[2];
@@ -240,7 +240,7 @@ public:
               vx *= frac; vy *= frac; vz *= frac;
             }
             s_.cx[i] = p[0]; s_.cy[i] = p[1]; s_.cz[i] = p[2];
-            s_.clearance[i] = conf.clearance(p);
+            s_.clearance[i] = clear;
           }
         }
         const double mx = p[0] - from[0], my = p[1] - from[1], mz = p[2] - from[2];
@@ -328,8 +328,7 @@ private:
     ++rebuilds_;
     const std::size_t n = s_.n_free;
     const double reach = law_.cutoff() + st_.skin;
-    const double r_max = s_.max_radius();
-    s_.fill_grid(grid_, reach * 2. * r_max);
+    s_.fill_grid(grid_, reach);
     rx_.assign(s_.x.begin(), s_.x.begin() + n);
     ry_.assign(s_.y.begin(), s_.y.begin() + n);
     rz_.assign(s_.z.begin(), s_.z.begin() + n);
@@ -346,7 +345,7 @@ private:
         {
           const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
           const std::size_t before = out.size();
-          grid_.for_each_near(xi, yi, zi, reach * (ri + r_max), [&](std::size_t j) {
+          grid_.for_each_near(xi, yi, zi, reach * ri, reach, [&](std::size_t j) {
             if(j == i) return;
             const double dx = s_.x[j] - xi, dy = s_.y[j] - yi, dz = s_.z[j] - zi;
             const double lim = reach * (ri + s_.r[j]);
@@ -408,7 +407,7 @@ private:
   ForceLaw law_;
   const SizingField& sizing_;
   Dynamics_settings st_;
-  Neighbor_grid grid_;
+  Bubble_grid grid_;
   std::vector<double> px_, py_, pz_, pvx_, pvy_, pvz_;   // predicted state (px_ also holds the fixed bubbles)
   std::vector<double> f0x_, f0y_, f0z_, f1x_, f1y_, f1z_;
   std::vector<double> ke_, disp_;
@@ -570,58 +569,80 @@ its region and the surface bubbles on the region's surfaces) of
 law (default `Cubic_bubble_force`, the paper's cubic) and
 \f$ w_{ij} = l_{ij}/(r_i + r_j) \f$. The factor \f$ r_i + r_j \f$ makes a pair
 at rest a spring of stiffness \f$ k = -f'(1) \f$ at any model scale, so the
-dynamics, and the tolerance below, are scale-free: units of length do not
-matter. Integration is Heun's predictor-corrector (an explicit Euler
-predictor, a trapezoidal corrector), from zero velocity. Surface bubbles
-never move. Radii follow the sizing field: a bubble's radius is read again
-once it has moved `radius_update_ratio` of it.
+motion measured in radii, and the tolerances below, do not depend on the
+units of length. Integration is Heun's predictor-corrector (an explicit Euler
+predictor, a trapezoidal corrector) from zero velocity. Surface bubbles never
+move. Radii follow the sizing field: a bubble's radius is read again each
+time it has moved `radius_update_ratio` of it, until the motion of the
+relaxation falls under ten times its tolerance; then radii are held, since
+where the field jumps (a surface bubble entering or leaving the weight-point
+range) a bubble moving across the jump would otherwise swing between two
+radii for ever. Every population round reads them afresh.
 
-<b>Defaults.</b> \f$ m = k = 1 \f$ set the units of time and force, so only
-the ratios below matter. The damping \f$ c = 2\sqrt{mk} \f$ is critical for one
-bubble held by one spring, the original bubble method's choice: in the packing
-a bubble is held by about twelve neighbours (a stiffness near \f$ 4k \f$), so
-its own rattling is damped at half the critical rate and dies within a few
-periods, while the slow collective drift of whole groups of bubbles, which
-critical damping of the rattling would over-damp, still moves at a useful
-pace. The time step \f$ 0.2\sqrt{m/k} \f$ is small against the period
-\f$ 2\pi\sqrt{m/k} \f$ of a single spring and still about a tenth of the
-period of the stiffest mode of a crowded packing (\f$ \omega \approx
-\sqrt{12k/m} \f$), well inside the region where Heun's method damps that
-mode; halving it only doubles the steps. A move is also capped at
-`max_step_ratio` of the radius, a safeguard for crowded starts.
+<b>Defaults.</b> \f$ m = k = 1 \f$ fix the units of time and force, so only
+the ratios matter. The damping \f$ c = 2\sqrt{mk} \f$ is critical for one
+bubble on one spring, the original bubble method's choice. In a packing a
+bubble is held by about twelve neighbours, so its own rattling is damped at
+about half the critical rate and dies within a few periods, while the slow
+drift of whole groups, which a damping critical for the rattling would
+over-damp, keeps a useful pace; on crowded test clouds \f$ c = 2 \f$ needed
+fewer steps than 0.5, 1 or 4. The time step \f$ 0.2\sqrt{m/k} \f$ is a
+thirtieth of the period of one spring. Explicit steps are stable only while
+\f$ \Delta t\,\omega \f$ stays under about 1 for the stiffest motion of a
+bubble, and crowded starts (the initial lattice of edge \f$ r \f$) are far
+stiffer than a packing at rest, so a bubble whose neighbourhood would break
+that bound (by Gershgorin's bound on its stiffness, the sum over its
+neighbours of the larger of \f$ |f'(w)| \f$ and \f$ f(w)/w \f$) gets a heavier
+mass and a damping grown with it (same damping ratio), as in dynamic
+relaxation: rest states do not change, only the path to them, and the
+default step stays safe for any start. A move is also capped at
+`max_step_ratio` of the radius.
 
-<b>Convergence.</b> A relaxation stops when the largest move of a bubble in one
-step, over its radius, is under `displacement_tolerance`, or after
-`number_of_iterations` steps.
+<b>Convergence.</b> A relaxation stops when the largest move of a bubble in
+one step, over its radius, is under its tolerance, or after
+`number_of_relaxation_steps` steps. While population control still changes the
+population much, relaxations stop at `round_displacement_tolerance`: the
+bubbles only need to spread out before the next pass. Once it settles, they
+go to `displacement_tolerance` and the population is checked once more.
 
 <b>Confinement.</b> A bubble whose move crosses a surface of its region (its
-boundary, or a surface inside it such as a fault that ends in the body) is
-put back at the closest surface point (CGAL's AABB tree), moved inward by
-`surface_offset_ratio` of its radius, and stopped. Bubble centres also stay
-outside the diametral balls of the surface triangles (the ball through the
-corners centred in the triangle's plane) and surface edges, enlarged by
-`1 + diametral_ball_margin`: then every input triangle whose corners do not
-crowd each other is a Delaunay facet and the tetrahedralization keeps it
-whole. A bubble inside such a ball is pushed out along its radius. Balls wider
-than `max_protected_ball_ratio` times the local surface-bubble radius (needle
-and cap triangles) are not protected, since emptying them would leave holes
-larger than the mesh size. A start position that cannot be made valid drops
-the bubble; a move that cannot is undone.
+boundary, or a surface inside it such as a fault that ends in the body), or
+ends nearer to one than half `surface_offset_ratio` of its radius, is put
+back: at the closest surface point (CGAL's AABB tree), moved inward by
+`surface_offset_ratio` of its radius. Bubble centres also stay outside the
+diametral balls of the surface triangles (the ball through the corners
+centred in the triangle's plane) and surface edges, enlarged by
+`1 + diametral_ball_margin`: then every input triangle whose own corners do
+not crowd it is a Delaunay facet and the tetrahedralization keeps it whole. A
+bubble that enters one such ball goes to the closest point outside it; where
+balls overlap it stops where its path meets the first one and slides along
+it (pushing out of one ball into the next can go on for ever). It keeps its
+velocity along the wall, loses the part into it, and keeps only the share of
+its speed that it could use. Balls wider than `max_protected_ball_ratio`
+times the local surface-bubble radius (needle and cap triangles) are not
+protected, since emptying them would leave holes larger than the mesh size.
+A start position that cannot be made valid drops the bubble; a move that
+cannot is undone. The checks cost AABB-tree queries, so each bubble carries a
+clearance (a ball free of surfaces and protected balls around its last
+checked position) and moves inside it skip them.
 
-<b>Population control.</b> After the first relaxation, rounds of
-`control_bubble_population()` (delete interior bubbles with an overlap ratio
-above `max_overlap_ratio`, insert new ones in the largest gap next to those
-below `min_overlap_ratio`) alternate with relaxation, until a round changes at
-most `population_tolerance` of the population, or `number_of_population_rounds`
-rounds, or the changes stop shrinking for two rounds in a row (the guard
-against endless add/delete cycles).
+<b>Population control.</b> Before the first relaxation, and after each one,
+a pass of `control_bubble_population()` deletes interior bubbles with an
+overlap ratio above `max_overlap_ratio` and inserts new ones in the largest
+gap next to those below `min_overlap_ratio`. Rounds go on until a pass
+changes at most `population_tolerance` of the population (or one bubble),
+`number_of_population_rounds` have run, or the changes have stopped shrinking
+for two rounds in a row (the guard against endless add/delete cycles).
 
 <b>Parallelism and determinism.</b> Regions relax independently (their
 surface bubbles are fixed) and, with `CGAL::Parallel_tag` and TBB, at the
 same time; inside a region the force evaluation, the integration and the
 confinement run in parallel. Every bubble sums its forces over its own
-neighbours in a fixed order, and sums and maxima over bubbles are taken in
-fixed blocks, so the result is bit-identical whatever the number of threads.
+neighbour list in a fixed order, and sums and maxima over bubbles are taken
+over fixed blocks combined in order, so the result is bit-identical whatever
+the number of threads. Neighbours are found with Verlet lists (pairs within
+`(cutoff + neighbor_skin)(r_i + r_j)`, rebuilt when a bubble has moved, or
+grown, more than the skin allows) filled from uniform grids.
 
 The output is grouped by region (increasing index); in a region, the
 surviving input bubbles keep their order and new bubbles follow. Interior
@@ -650,7 +671,7 @@ the end.
     \cgalParamType{`double`} \cgalParamDefault{1}
   \cgalParamNEnd
   \cgalParamNBegin{mass}
-    \cgalParamDescription{m, the mass of an interior bubble}
+    \cgalParamDescription{m, the mass of an interior bubble (before mass scaling of crowded bubbles)}
     \cgalParamType{`double`} \cgalParamDefault{1}
   \cgalParamNEnd
   \cgalParamNBegin{damping}
@@ -661,16 +682,20 @@ the end.
     \cgalParamDescription{the integration step}
     \cgalParamType{`double`} \cgalParamDefault{\f$ 0.2\sqrt{m/k} \f$}
   \cgalParamNEnd
-  \cgalParamNBegin{number_of_iterations}
+  \cgalParamNBegin{number_of_relaxation_steps}
     \cgalParamDescription{step budget of one relaxation (there is one per population round)}
     \cgalParamType{`std::size_t`} \cgalParamDefault{2000}
   \cgalParamNEnd
   \cgalParamNBegin{displacement_tolerance}
-    \cgalParamDescription{a relaxation has converged when no bubble moves more than this share of its radius in a step}
+    \cgalParamDescription{the last relaxation has converged when no bubble moves more than this share of its radius in a step}
     \cgalParamType{`double`} \cgalParamDefault{0.001}
   \cgalParamNEnd
+  \cgalParamNBegin{round_displacement_tolerance}
+    \cgalParamDescription{the same for the relaxations while the population still changes}
+    \cgalParamType{`double`} \cgalParamDefault{0.01}
+  \cgalParamNEnd
   \cgalParamNBegin{min_overlap_ratio, max_overlap_ratio}
-    \cgalParamDescription{bounds of the overlap ratio of interior bubbles}
+    \cgalParamDescription{bounds of the overlap ratio of interior bubbles (see `overlap_ratios()`)}
     \cgalParamType{`double`} \cgalParamDefault{10 and 14 (the paper's)}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_population_rounds}
@@ -678,12 +703,13 @@ the end.
     \cgalParamType{`std::size_t`} \cgalParamDefault{12}
   \cgalParamNEnd
   \cgalParamNBegin{population_tolerance}
-    \cgalParamDescription{the population has settled when a round adds and removes at most this share of it}
+    \cgalParamDescription{the population has settled when a round adds and removes at most this share of it (or one bubble)}
     \cgalParamType{`double`} \cgalParamDefault{0.002}
   \cgalParamNEnd
   \cgalParamNBegin{insertion_clearance}
-    \cgalParamDescription{least distance, over the sum of radii, from an inserted bubble to all others}
-    \cgalParamType{`double`} \cgalParamDefault{0.85}
+    \cgalParamDescription{least distance, over the sum of radii, from an inserted bubble to all others; the cubic
+      law costs almost nothing down to 0.7 (its energy at w = 0.7 is that of two bubbles out of reach)}
+    \cgalParamType{`double`} \cgalParamDefault{0.7}
   \cgalParamNEnd
   \cgalParamNBegin{diametral_ball_margin}
     \cgalParamDescription{relative enlargement of the protected diametral balls}
@@ -694,29 +720,30 @@ the end.
     \cgalParamType{`double`} \cgalParamDefault{3}
   \cgalParamNEnd
   \cgalParamNBegin{surface_offset_ratio}
-    \cgalParamDescription{how far off the surface, over its radius, a bubble put back lands}
+    \cgalParamDescription{how far off the surface, over its radius, a bubble put back lands; half of it is the
+      nearest a bubble may come to a surface}
     \cgalParamType{`double`} \cgalParamDefault{0.5}
   \cgalParamNEnd
   \cgalParamNBegin{neighbor_skin}
     \cgalParamDescription{reach of the neighbour lists beyond the force's, over the sum of radii:
       larger rebuilds them less often but makes them longer}
-    \cgalParamType{`double`} \cgalParamDefault{0.3}
+    \cgalParamType{`double`} \cgalParamDefault{0.15}
   \cgalParamNEnd
   \cgalParamNBegin{max_step_ratio}
     \cgalParamDescription{longest move in one step over the radius (capped at 0.9 `neighbor_skin`)}
-    \cgalParamType{`double`} \cgalParamDefault{0.25}
+    \cgalParamType{`double`} \cgalParamDefault{0.125}
   \cgalParamNEnd
   \cgalParamNBegin{radius_update_ratio}
     \cgalParamDescription{a radius is read again from the sizing field after its bubble moved this share of it}
-    \cgalParamType{`double`} \cgalParamDefault{0.05}
+    \cgalParamType{`double`} \cgalParamDefault{0.1}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads used; 0 uses all cores. The result does not depend on it.}
+    \cgalParamDescription{threads used (a TBB task arena); 0 uses all cores. The result does not depend on it.}
     \cgalParamType{`std::size_t`} \cgalParamDefault{0}
   \cgalParamNEnd
   \cgalParamNBegin{visitor}
     \cgalParamDescription{called with a `Relaxation_progress` after every step and at the end of every
-      round of every region; calls are serialised (never two at once) but come from the
+      relaxation of every region; calls are serialised (never two at once) but come from the
       threads of the regions; returning `false` stops the relaxation (it may also return `void`)}
     \cgalParamType{a callable}
     \cgalParamDefault{none}

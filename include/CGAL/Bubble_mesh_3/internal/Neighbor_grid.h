@@ -88,8 +88,9 @@ public:
     return (cell_coordinate(z, 2) * dims_[1] + cell_coordinate(y, 1)) * dims_[0] + cell_coordinate(x, 0);
   }
 
-  /// files points `0..n-1` (coordinates in three arrays); forgets inserted points
-  void build(const double* x, const double* y, const double* z, std::size_t n)
+  /// files points `0..n-1` (coordinates in three arrays), under the names
+  /// `ids[k]` if given (else k); forgets inserted points
+  void build(const double* x, const double* y, const double* z, std::size_t n, const Index* ids = nullptr)
   {
     CGAL_precondition(n < none);
     const std::size_t nc = number_of_cells();
@@ -103,13 +104,13 @@ public:
     for(std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
     items_.resize(n);
     std::vector<Index> fill(start_.begin(), start_.end() - 1);
-    for(std::size_t i = 0; i < n; ++i) items_[fill[cell_[i]]++] = static_cast<Index>(i);
+    for(std::size_t i = 0; i < n; ++i) items_[fill[cell_[i]]++] = ids ? ids[i] : static_cast<Index>(i);
     std::fill(extra_head_.begin(), extra_head_.end(), none);
     std::fill(extra_tail_.begin(), extra_tail_.end(), none);
-    extra_next_.assign(n, none);
+    extra_next_.clear();
   }
 
-  /// adds point `i` (an index at least the `n` of the last `build()`) at `(x,y,z)`
+  /// adds point `i` (a name not used by the last `build()`) at `(x,y,z)`
   void insert(std::size_t i, double x, double y, double z)
   {
     CGAL_precondition(i < none);
@@ -152,6 +153,88 @@ private:
   std::vector<Index> items_;
   std::vector<Index> cell_;       // cell of each built point
   std::vector<Index> extra_head_, extra_tail_, extra_next_; // inserted points, chained per cell
+};
+
+/*
+Neighbour search among balls of unequal radii: the pairs wanted are those
+closer than `a + b * r_j` (a depends on the query bubble, b is a factor of
+the other bubble's radius), so the reach depends on the largest radius
+around. One grid sized for the largest radius would make a fine part of a
+model, next to a few coarse surface triangles, scan whole regions; so balls
+up to twice the median radius go in a grid sized for them, and the few larger
+ones in a second, coarser grid. A query visits the small grid, then the large
+one, each in its fixed order.
+*/
+class Bubble_grid
+{
+public:
+  typedef Neighbor_grid::Index Index;
+
+  /// files balls `0..n-1`; `reach_factor * (r_i + r_j)` is the largest reach that queries will ask for
+  void build(const double* x, const double* y, const double* z, const double* r, std::size_t n,
+             const double box[6], double reach_factor)
+  {
+    // (radii are only read here)
+    std::vector<double> radii(r, r + n);
+    double median = 0., largest = 0.;
+    if(n > 0)
+    {
+      std::nth_element(radii.begin(), radii.begin() + n / 2, radii.end());
+      median = radii[n / 2];
+      largest = *std::max_element(r, r + n);
+    }
+    threshold_ = 2. * median;
+    r_small_ = 0.;
+    small_.clear();
+    large_.clear();
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      if(r[i] <= threshold_) { small_.push_back(Index(i)); r_small_ = (std::max)(r_small_, r[i]); }
+      else large_.push_back(Index(i));
+    }
+    r_large_ = largest;
+    setup(small_grid_, small_, x, y, z, box, reach_factor * 2. * (std::max)(r_small_, 1e-300));
+    setup(large_grid_, large_, x, y, z, box, reach_factor * 2. * (std::max)(r_large_, 1e-300));
+  }
+
+  /// adds ball `i` (a name beyond the `n` of `build()`) at `(x,y,z)` with radius `r`
+  void insert(std::size_t i, double x, double y, double z, double r)
+  {
+    if(r <= threshold_ || large_.empty())
+    {
+      small_grid_.insert(i, x, y, z);
+      r_small_ = (std::max)(r_small_, r);
+    }
+    else
+      large_grid_.insert(i, x, y, z);
+  }
+
+  /// calls `f(j)` for (at least) every ball j with |p - x_j| < a + b * r_j
+  template <class F>
+  void for_each_near(double x, double y, double z, double a, double b, const F& f) const
+  {
+    small_grid_.for_each_near(x, y, z, a + b * r_small_, f);
+    if(!large_.empty())
+      large_grid_.for_each_near(x, y, z, a + b * r_large_, f);
+  }
+
+  double largest_radius() const { return (std::max)(r_small_, r_large_); }
+
+private:
+  static void setup(Neighbor_grid& grid, const std::vector<Index>& members, const double* x, const double* y,
+                    const double* z, const double box[6], double cell)
+  {
+    const std::size_t m = members.size();
+    grid.set_domain(box[0] - cell, box[1] - cell, box[2] - cell, box[3] + cell, box[4] + cell, box[5] + cell,
+                    cell, 4 * m + 64);
+    std::vector<double> gx(m), gy(m), gz(m);
+    for(std::size_t k = 0; k < m; ++k) { gx[k] = x[members[k]]; gy[k] = y[members[k]]; gz[k] = z[members[k]]; }
+    grid.build(gx.data(), gy.data(), gz.data(), m, members.data());
+  }
+
+  double threshold_ = 0., r_small_ = 0., r_large_ = 0.;
+  std::vector<Index> small_, large_;
+  Neighbor_grid small_grid_, large_grid_;
 };
 
 } // namespace internal

@@ -160,11 +160,21 @@ public:
     return best;
   }
 
-  /// radius of a ball around `p` free of surfaces and protected balls; negative inside a ball
-  double clearance(const double p[3]) const
+  /// nearest a bubble of radius `radius` may come to a surface
+  double gap(double radius) const { return 0.5 * settings_.offset_ratio * radius; }
+
+  /// radius of a ball around `p` in which a bubble of radius `radius` meets no
+  /// surface closer than `gap(radius)` and no protected ball; negative if it does at `p`
+  double clearance(const double p[3], double radius) const
   {
     if(!tree_) return (std::numeric_limits<double>::max)();
-    const double dist = std::sqrt(CGAL::to_double(tree_->squared_distance(Point_3(p[0], p[1], p[2]))));
+    return clearance(p, radius, CGAL::to_double(tree_->squared_distance(Point_3(p[0], p[1], p[2]))));
+  }
+
+  /// the same, knowing the squared distance `d2` from `p` to the surfaces
+  double clearance(const double p[3], double radius, double d2) const
+  {
+    const double dist = std::sqrt(d2) - gap(radius);
     // a protected ball lies within twice its radius of the surfaces (its centre is
     // at most one radius off its triangle): far from them no ball needs looking at
     const double far = dist - 2. * largest_ball_radius_;
@@ -182,20 +192,24 @@ public:
 
   /*
   Checks the move of a bubble of radius `radius` from the valid position
-  `from` to `p`. If `p` lies across a surface it is put back: at the closest
-  surface point, moved inward (off the surface by `offset_ratio * radius`).
+  `from` to `p`. If `p` lies across a surface, or nearer to one than
+  `gap(radius)`, it is put back: at the closest surface point, moved inward
+  (off the surface by `offset_ratio * radius`).
   A position inside protected balls is pushed out of them along their radii.
   REJECTED when that fails: the caller then keeps `from`. When MOVED,
   `normal` is the unit normal of the last constraint met, towards the side
   the bubble may be on (the caller removes the velocity against it).
   */
-  Confinement_result confine(const double from[3], double p[3], double radius, double normal[3]) const
+  Confinement_result confine(const double from[3], double p[3], double radius, double normal[3],
+                             double& clear) const
   {
+    clear = (std::numeric_limits<double>::max)();
     if(!tree_) return Confinement_result::UNCHANGED;
     double q[3] = {p[0], p[1], p[2]};
-    if(crosses(from, q))
+    const double d2 = CGAL::to_double(tree_->squared_distance(Point_3(q[0], q[1], q[2])));
+    if(d2 < gap(radius) * gap(radius) || crosses(from, q))
     {
-      put_back(from, p, radius, q, normal);
+      if(!put_back(from, p, radius, q, normal)) return Confinement_result::REJECTED;
       bool pushed = false;
       if(!push_out_of_balls(from, q, pushed, normal)) return Confinement_result::REJECTED;
       if(pushed && crosses(from, q)) return Confinement_result::REJECTED;
@@ -216,8 +230,12 @@ public:
         for(int d = 0; d < 3; ++d) q[d] = r[d];
     }
     else
+    {
+      clear = clearance(q, radius, d2);
       return Confinement_result::UNCHANGED;
+    }
     p[0] = q[0]; p[1] = q[1]; p[2] = q[2];
+    clear = clearance(q, radius);
     return Confinement_result::MOVED;
   }
 
@@ -231,15 +249,25 @@ public:
     if(!tree_) return Confinement_result::REJECTED;
     bool moved = false;
     double inside[3] = {p[0], p[1], p[2]};
-    if(!is_inside(p[0], p[1], p[2]))
+    const bool in = is_inside(p[0], p[1], p[2]);
+    if(!in || too_close(p, radius))
     {
       const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
       const std::size_t t = std::size_t(cp.second - triangles_.begin());
-      const double s = is_boundary_[t] ? inward_sign_[t] : 1.;
+      double s = inward_sign_[t];
+      if(in || !is_boundary_[t])
+      {
+        // inside already (too close), or near a surface inside the region: stay on p's side
+        const double side = (p[0] - CGAL::to_double(cp.first.x())) * normal_[t][0] +
+                            (p[1] - CGAL::to_double(cp.first.y())) * normal_[t][1] +
+                            (p[2] - CGAL::to_double(cp.first.z())) * normal_[t][2];
+        s = side >= 0. ? 1. : -1.;
+      }
       const double off = settings_.offset_ratio * radius;
       for(int d = 0; d < 3; ++d)
         inside[d] = CGAL::to_double(cp.first[d]) + s * normal_[t][d] * off;
-      if(!is_inside(inside[0], inside[1], inside[2])) return Confinement_result::REJECTED;
+      if(!is_inside(inside[0], inside[1], inside[2]) || too_close(inside, radius)) return Confinement_result::REJECTED;
+      if(in && crosses(p, inside)) return Confinement_result::REJECTED;
       moved = true;
     }
     double q[3] = {inside[0], inside[1], inside[2]};
@@ -252,11 +280,11 @@ public:
     return Confinement_result::MOVED;
   }
 
-  /// may a new bubble sit at `p`, reached from the valid position `from` without crossing a surface?
-  bool accepts(const double from[3], const double p[3]) const
+  /// may a new bubble of radius `radius` sit at `p`, reached from the valid position `from` without crossing a surface?
+  bool accepts(const double from[3], const double p[3], double radius) const
   {
     if(!tree_) return false;
-    return deepest_ball(p) == none && !crosses(from, p);
+    return deepest_ball(p) == none && !crosses(from, p) && !too_close(p, radius);
   }
 
 private:
@@ -430,7 +458,13 @@ private:
   }
 
   // p lies across a surface seen from `from`: closest surface point to p, then inward
-  void put_back(const double from[3], const double p[3], double radius, double q[3], double normal[3]) const
+  bool too_close(const double p[3], double radius) const
+  {
+    const double g = gap(radius);
+    return CGAL::to_double(tree_->squared_distance(Point_3(p[0], p[1], p[2]))) < g * g;
+  }
+
+  bool put_back(const double from[3], const double p[3], double radius, double q[3], double normal[3]) const
   {
     const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
     const std::size_t t = std::size_t(cp.second - triangles_.begin());
@@ -450,7 +484,8 @@ private:
       normal[d] = s * normal_[t][d];
       q[d] = c[d] + normal[d] * off;
     }
-    if(!crosses(from, q)) return;
+    if(!crosses(from, q)) return true;
+    if(!crosses(from, p)) return false;
     // near folds the closest point may lie on another sheet: stop short along the path instead
     double lo = 0., hi = 1.;
     for(int it = 0; it < 30; ++it)
@@ -468,6 +503,7 @@ private:
       q[d] = from[d] + tt * (p[d] - from[d]);
       normal[d] = len > 0. ? (from[d] - p[d]) / len : 0.;
     }
+    return !too_close(q, radius);
   }
 
   // moves q back along the path from `from` (outside every ball) to where it

@@ -9,9 +9,11 @@
 // Named parameters of the bubble dynamics (relax_bubbles(),
 // control_bubble_population()). Chain them with the two-argument form:
 // `parameters::time_step(0.05, parameters::damping(3.))`, or append to a CGAL
-// chain: `parameters::mass(2., CGAL::parameters::number_of_iterations(500))`.
-// CGAL tags reused: `number_of_iterations` (step budget of one relaxation
-// round) and `visitor` (progress figures).
+// chain: `parameters::mass(2., CGAL::parameters::visitor(v))`.
+// CGAL tag reused: `visitor` (progress figures). The step budget has its own
+// tag, not CGAL's `number_of_iterations`: make_bubble_mesh_3() hands one
+// parameter pack to every stage, and k-means, surface remeshing and sliver
+// removal already read `number_of_iterations` as their own budgets.
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -26,6 +28,7 @@ enum mass_t { mass };
 enum damping_t { damping };
 enum stiffness_t { stiffness };
 enum time_step_t { time_step };
+enum number_of_relaxation_steps_t { number_of_relaxation_steps };
 enum displacement_tolerance_t { displacement_tolerance };
 enum round_displacement_tolerance_t { round_displacement_tolerance };
 enum min_overlap_ratio_t { min_overlap_ratio };
@@ -45,7 +48,6 @@ enum dynamics_threads_t { dynamics_threads };
 namespace parameters {
 
 using CGAL::parameters::default_values;
-using CGAL::parameters::number_of_iterations;
 using CGAL::parameters::visitor;
 
 // One-argument form starts a chain, two-argument form appends to one.
@@ -73,6 +75,8 @@ CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, damping, damping)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, stiffness, stiffness)
 /// integration time step (default 0.2 sqrt(m/k))
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, time_step, time_step)
+/// step budget of one relaxation (one per population round; default 2000)
+CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(std::size_t, number_of_relaxation_steps, number_of_relaxation_steps)
 /// convergence: largest displacement in one step over the local radius (default 1e-3)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, displacement_tolerance, displacement_tolerance)
 /// convergence of the relaxations between population passes, looser since more passes follow (default 1e-2)
@@ -83,15 +87,15 @@ CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, min_overlap_ratio, min_overlap_rat
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_overlap_ratio, max_overlap_ratio)
 /// most population-control rounds, each followed by a relaxation (default 12; 0 = none)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(std::size_t, number_of_population_rounds, number_of_population_rounds)
-/// the population has settled when a round changes at most this share of it (default 0.002)
+/// the population has settled when a round changes at most this share of it, or one bubble (default 0.002)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, population_tolerance, population_tolerance)
-/// least normalised distance l/(r_new + r_j) of an inserted bubble to the others (default 0.85)
+/// least normalised distance l/(r_new + r_j) of an inserted bubble to the others (default 0.7)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, insertion_clearance, insertion_clearance)
-/// extra reach of the neighbour lists, over r_i + r_j (default 0.3)
+/// extra reach of the neighbour lists, over r_i + r_j (default 0.15)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, neighbor_skin, neighbor_skin)
-/// longest move of a bubble in one step, over its radius (default 0.25)
+/// longest move of a bubble in one step, over its radius (default 0.125, at most 0.9 skin)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_step_ratio, max_step_ratio)
-/// a bubble's radius is read again from the sizing field after it moved this share of it (default 0.05)
+/// a bubble's radius is read again from the sizing field after it moved this share of it (default 0.1)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, radius_update_ratio, radius_update_ratio)
 /// bubble centres stay farther than (1 + margin) times a diametral ball's radius from its centre (default 0.02)
 CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, diametral_ball_margin, diametral_ball_margin)
