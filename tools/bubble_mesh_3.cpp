@@ -21,7 +21,6 @@
 #include <thread>
 #endif
 
-#include <cstdio>
 #include <iomanip>
 #include <memory>
 
@@ -58,7 +57,11 @@ const char* usage_text =
 "                             dihedral angles, per region) as SVG\n"
 "  --threads N                number of threads (default: all cores); the mesh is the\n"
 "                             same whatever N\n"
-"  --seed S                   seed of the k-means clustering (default 0)\n"
+"  --seed S                   seed of the k-means clustering and of the sliver\n"
+"                             removal's trial moves (default 0)\n"
+"  --sliver-bound D           move bubbles of tetrahedra whose smallest dihedral angle\n"
+"                             is under D degrees (default 15); surfaces never move\n"
+"  --no-sliver-removal        keep the tetrahedralization as it is\n"
 "  --summary-json FILE        also write the model summary as JSON to FILE\n"
 "  --merge-tolerance T        merge points closer than T times the bounding-box\n"
 "                             diagonal (default 0: merge exactly coincident points only)\n"
@@ -79,6 +82,8 @@ struct Options
   bool quiet = false;
   std::string summary_json;
   double merge_tolerance = 0.;
+  bool sliver_removal = true;
+  double sliver_bound = 15.;
 };
 
 [[noreturn]] void usage_error(const std::string& msg)
@@ -117,6 +122,8 @@ Options parse_options(int argc, char** argv)
     else if(a == "-q" || a == "--quiet") o.quiet = true;
     else if(a == "--summary-json") o.summary_json = value(a);
     else if(a == "--merge-tolerance") o.merge_tolerance = parse_double(a, value(a));
+    else if(a == "--no-sliver-removal") o.sliver_removal = false;
+    else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
     else if(!a.empty() && a[0] == '-' && a != "-") usage_error("unknown option '" + a + "'");
     else if(o.input.empty()) o.input = a;
     else usage_error("more than one input file ('" + o.input + "' and '" + a + "')");
@@ -124,6 +131,8 @@ Options parse_options(int argc, char** argv)
   if(o.input.empty()) usage_error("no input file given");
   if(o.merge_tolerance < 0) usage_error("--merge-tolerance must not be negative");
   if(o.threads < 0) usage_error("--threads must not be negative");
+  if(!(o.sliver_bound > 0. && o.sliver_bound < 70.))
+    usage_error("--sliver-bound must be in (0, 70) degrees (a regular tetrahedron has 70.53)");
   for(const std::string& out : o.outputs)
   {
     try { BM::IO::check_mesh_file_name(out); }
@@ -196,7 +205,9 @@ int main(int argc, char** argv)
     BM::make_bubble_mesh_3(model, c3t3,
                            BM::parameters::stage_callback(progress,
                            BM::parameters::bubble_mesh_report(&report,
-                           CGAL::parameters::random_seed(opt.seed))));
+                           BM::parameters::perturb_interior_vertices(opt.sliver_removal,
+                           BM::parameters::sliver_bound(opt.sliver_bound,
+                           CGAL::parameters::random_seed(opt.seed))))));
     stage_timer.stop();
   }
   catch(const std::exception& e)
@@ -225,7 +236,14 @@ int main(int argc, char** argv)
               << 100. * tr.share_of_triangles_kept_whole() << " %)\n" << std::defaultfloat
               << "time: surface bubbles " << report.time_surface_bubbles << " s, placement "
               << report.time_placement << " s, relaxation " << report.time_relaxation
-              << " s, tetrahedralization " << report.time_tetrahedralization << " s\n";
+              << " s, tetrahedralization " << report.time_tetrahedralization << " s, sliver removal "
+              << report.time_sliver_removal << " s\n";
+    const auto& sr = report.sliver_removal;
+    if(sr.perturbation_done)
+      std::cout << "sliver removal: tetrahedra with a dihedral angle under " << sr.sliver_bound << " degrees "
+                << sr.number_of_slivers_before << " -> " << sr.number_of_slivers_after << ", smallest dihedral "
+                << sr.min_dihedral_angle_before << " -> " << sr.min_dihedral_angle_after << " degrees ("
+                << sr.number_of_vertices_moved << " bubbles moved)\n";
     BM::IO::write_quality_report_text(std::cout, quality);
   }
 

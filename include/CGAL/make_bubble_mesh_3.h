@@ -13,6 +13,7 @@
 #include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
+#include <CGAL/Bubble_mesh_3/remove_slivers.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 
@@ -36,10 +37,12 @@ struct Bubble_mesh_report
   std::vector<Region_placement_statistics> placement; ///< per region (entry 0 unused)
   Relaxation_report relaxation;               ///< stages 3 and 4
   Tetrahedralization_report tetrahedralization; ///< stage 5
+  Sliver_removal_report sliver_removal;       ///< stage 6 (`remove_slivers()`)
   double time_surface_bubbles = 0.;           ///< seconds
   double time_placement = 0.;                 ///< seconds, clustering included
   double time_relaxation = 0.;                ///< seconds
   double time_tetrahedralization = 0.;        ///< seconds
+  double time_sliver_removal = 0.;            ///< seconds
 };
 
 namespace internal_np {
@@ -91,9 +94,10 @@ Meshes a valid geological model with the clustering-based bubble method and
 fills `c3t3`: surface bubbles (`place_surface_bubbles()`), clustering and
 initial interior bubbles (`place_initial_bubbles()` with a
 `Surface_bubble_sizing_field`), relaxation and population control
-(`relax_bubbles()`), and the conforming Delaunay tetrahedralization with the
+(`relax_bubbles()`), the conforming Delaunay tetrahedralization with the
 input surfaces recovered and the cells labelled by region
-(`tetrahedralize_bubbles()`).
+(`tetrahedralize_bubbles()`), and sliver removal by moving interior vertices
+only (`remove_slivers()`; pass `perturb_interior_vertices(false)` to skip it).
 
 The model must be valid (`validate_geological_model()`); the stages assume
 it. Each stage is a free function that can be called alone; this function
@@ -112,7 +116,7 @@ stages is accepted here too.
     \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNExtra{the named parameters of `place_surface_bubbles()`, `Surface_bubble_sizing_field`,
-    `place_initial_bubbles()`, `relax_bubbles()` and `tetrahedralize_bubbles()`}
+    `place_initial_bubbles()`, `relax_bubbles()`, `tetrahedralize_bubbles()` and `remove_slivers()`}
 \cgalNamedParamsEnd
 
 \throws Geological_model_error or Tetrahedralization_error, naming the element at fault
@@ -166,6 +170,15 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& mode
   report->tetrahedralization = tetrahedralize_bubbles(model, centres, c3t3, np);
   timer.stop();
   report->time_tetrahedralization = timer.time();
+
+  // Surfaces and their points never move here: only bubbles do, and only where
+  // the cells they make are better, so the guarantees of stage 5 still hold.
+  start("sliver removal");
+  timer.reset();
+  timer.start();
+  report->sliver_removal = remove_slivers(c3t3, np);
+  timer.stop();
+  report->time_sliver_removal = timer.time();
   return *report;
 }
 

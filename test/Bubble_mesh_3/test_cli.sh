@@ -87,6 +87,7 @@ assert all(r['volume'] > 0 for r in regions)
   check "progress line per stage" contains "$out" "tetrahedralization..."
   check "summary gives tetrahedra" contains "$out" "tetrahedra"
   check "summary gives triangles kept whole" contains "$out" "input triangles kept whole"
+  check "summary reports sliver removal" contains "$out" "sliver removal: tetrahedra with a dihedral angle under 15"
   for f in m.mesh m.msh m.vtu q.json q.svg; do
     check "$f written" test -s "$tmp/$f"
     check "$f.tmp not left" test ! -e "$tmp/$f.tmp"
@@ -122,6 +123,24 @@ for r in s['regions']:
   run "$model" -o "$tmp/one.mesh" --threads 1 -q
   check "one thread exits 0" test "$rc" -eq 0
   check "same mesh with 1 and 2 threads" cmp -s "$tmp/one.mesh" "$tmp/m.mesh"
+
+  # sliver removal moves bubbles only where it helps: switched off, the mesh is no better
+  run "$model" -q --no-sliver-removal --quality-json "$tmp/q_raw.json"
+  check "--no-sliver-removal exits 0" test "$rc" -eq 0
+  if command -v python3 >/dev/null; then
+    check "sliver removal: min dihedral not worse, fewer tets under 15 degrees" python3 -c "
+import json
+a=json.load(open('$tmp/q.json'))['all']; b=json.load(open('$tmp/q_raw.json'))['all']
+assert a['tetrahedra'] > 0 and b['tetrahedra'] > 0
+assert a['dihedral_angle']['min'] >= b['dihedral_angle']['min'], (a['dihedral_angle'], b['dihedral_angle'])
+sa=a['smallest_dihedral_angle']; sb=b['smallest_dihedral_angle']
+assert sa['share_under_15'] * a['tetrahedra'] < sb['share_under_15'] * b['tetrahedra'], (sa, sb)
+assert abs(a['volume'] - b['volume']) <= 1e-9 * b['volume']
+"
+  fi
+  run "$model" --sliver-bound 80
+  check "--sliver-bound out of range exits 2" test "$rc" -eq 2
+  check "--sliver-bound out of range named" contains "$err" "--sliver-bound"
 
   # a bad output name is refused before any work, nothing written
   run "$model" -o "$tmp/m.xyz"
