@@ -896,6 +896,7 @@ checks meaningless (bad indices, degenerate or duplicate triangles, a region
 boundary that is not a closed, manifold, outward oriented surface) ends the
 list. The list is empty when the model is valid.
 
+\param model the model to check
 \param np the named parameters of `validate_geological_model()`
 */
 template <class GeomTraits, class CGAL_NP_TEMPLATE_PARAMETERS>

@@ -34,6 +34,9 @@ boundary of the model, oriented outward from the model. The inverse of
 `geological_model_from_face_graphs()`, region by region.
 
 \tparam FaceGraph a model of `MutableFaceGraph`
+\param model the geological model
+\param r the region (0 for the outer boundary of the model)
+\param g the face graph the triangles are added to
 \param np optional named parameters among:
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_point_map}

@@ -146,6 +146,8 @@ else on its lowest region.
 
 The file is written to `filename.tmp` and renamed when complete.
 
+\param filename the output file
+\param c3t3 the mesh (cells in the complex are written, labelled by subdomain index)
 \param model gives the region and patch names and the sides of each patch
 \throws std::runtime_error naming the file if it cannot be written
 */

@@ -67,6 +67,8 @@ The file is written to `filename.tmp` and renamed when complete.
 
 \tparam C3T3 a `Mesh_complex_3_in_triangulation_3` with integral subdomain
         and surface patch indices (region, patch index + 1)
+\param filename the output file
+\param c3t3 the mesh (cells in the complex are written, labelled by subdomain index)
 \param model gives the region and patch names and the sides of each patch
 \throws std::runtime_error naming the file if it cannot be written
 */

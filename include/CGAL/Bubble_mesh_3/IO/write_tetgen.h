@@ -86,6 +86,8 @@ of `.ele` and `.face`.
 Each file is written to a `.tmp` name and renamed when complete; `.node` is
 renamed last.
 
+\param filename the output file
+\param c3t3 the mesh (cells in the complex are written, labelled by subdomain index)
 \param model gives the region and patch names and the sides of each patch
 \throws std::runtime_error naming the file if one cannot be written
 */
