@@ -60,6 +60,7 @@ Cost: O(restarts x iterations x n x k) time, O(n + k) memory.
 class K_means_clustering
 {
 public:
+  /// point type of the clustered coordinates
   typedef std::array<double, 3> Point;
 
   /*!
@@ -100,9 +101,13 @@ public:
                                             std::size_t(3)));
   }
 
+  /// seed of the random initialisation
   unsigned int seed() const { return seed_; }
+  /// most Lloyd iterations per run
   std::size_t max_iterations() const { return max_iterations_; }
+  /// convergence tolerance of the centre moves
   double tolerance() const { return tolerance_; }
+  /// runs from different seeds, the best one kept
   std::size_t number_of_restarts() const { return restarts_; }
 
   /*!

@@ -62,7 +62,9 @@ template <class GeomTraits>
 class Surface_bubble_sizing_field
 {
 public:
+  /// the traits class
   typedef GeomTraits Geom_traits;
+  /// point type
   typedef typename GeomTraits::Point_3 Point_3;
 
 private:

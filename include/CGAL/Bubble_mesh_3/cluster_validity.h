@@ -200,9 +200,13 @@ double silhouette_coefficient(const std::vector<std::array<double, 3> >& points,
 /// The three validity indices of one clustering.
 struct Cluster_validity
 {
+  /// k
   std::size_t number_of_clusters = 0;
+  /// sum of squared distances of the points to their cluster centres (the elbow curve)
   double sum_of_squared_errors = 0.;
+  /// Calinski-Harabasz index (larger is better)
   double calinski_harabasz = 0.;
+  /// mean silhouette coefficient, in [-1, 1] (larger is better)
   double silhouette = 0.;
 };
 

@@ -58,42 +58,65 @@ lengths and volumes in the model's units. A statistic over no element is NaN.
 */
 struct Geological_model_summary
 {
+  /// one region of the model
   struct Region
   {
+    /// region index (1 to `number_of_regions`)
     std::size_t index = 0;
+    /// region name
     std::string name;
     std::size_t number_of_boundary_triangles = 0; ///< triangles of patches with the region on exactly one side
     std::size_t number_of_inside_triangles = 0;   ///< triangles of surfaces inside the region
     std::size_t number_of_points = 0;             ///< vertices of all these triangles
     double volume = 0.;                           ///< signed volume enclosed by the boundary
     // over the distinct edges and the triangles of the boundary and of the surfaces inside
+    /// shortest, median and longest edge
+    ///@{
     double min_edge_length = 0., median_edge_length = 0., max_edge_length = 0.;
+    ///@}
+    /// smallest angle of these triangles (degrees)
     double min_angle = 0.;
+    /// the triangle where it occurs
     std::size_t min_angle_triangle = 0;
   };
 
   /// a patch with the same region on both sides (e.g. a fault ending inside a body)
   struct Surface_inside_region
   {
+    /// patch index
     std::size_t patch = 0;
+    /// patch name
     std::string name;
+    /// the region on both sides
     std::size_t region = 0;
+    /// its name
     std::string region_name;
+    /// triangles of the patch
     std::size_t number_of_triangles = 0;
   };
 
+  /// the file the model was read from
   std::string file_name;
+  /// numbers of points, triangles, patches and regions (without the outside)
+  ///@{
   std::size_t number_of_points = 0, number_of_triangles = 0, number_of_patches = 0, number_of_regions = 0;
+  ///@}
+  /// bounding box of the points
   Bbox_3 bbox;
   double volume = 0.; ///< volume enclosed by the outer boundary
+  /// shortest, median and longest edge of all triangles
+  ///@{
   double min_edge_length = 0., median_edge_length = 0., max_edge_length = 0.;
+  ///@}
   double min_angle = 0.;               ///< smallest angle of any triangle
   std::size_t min_angle_triangle = 0;  ///< the triangle where it occurs
   std::size_t min_angle_patch = 0;     ///< and its patch
+  /// and its name
   std::string min_angle_patch_name;
   double poor_angle_bound = 1.;            ///< angle under which a triangle counts as poor
   std::size_t number_of_poor_triangles = 0; ///< triangles with an angle under `poor_angle_bound`
   std::vector<Region> regions;             ///< regions 1..n, in order
+  /// patches with the same region on both sides
   std::vector<Surface_inside_region> surfaces_inside_regions;
 };
 

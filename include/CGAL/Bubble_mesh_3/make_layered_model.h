@@ -47,7 +47,9 @@ whole model.
 struct Layered_model_parameters
 {
   /// extent of the box `[0,size_x] x [0,size_y] x [0,size_z]`, z up
+  ///@{
   double size_x = 1000., size_y = 600., size_z = 400.;
+  ///@}
   /// number of ordinary layers (at least 2); the thin layer comes in addition,
   /// above the `number_of_layers / 2` lowest ones
   std::size_t number_of_layers = 4;

@@ -49,19 +49,24 @@ What `place_initial_bubbles()` did in one region (see the named parameter
 */
 struct Region_placement_statistics
 {
+  /// the region
   std::size_t region = 0;
   std::size_t number_of_surface_points = 0;   ///< points clustered
   std::size_t number_of_clusters = 0;         ///< k used
   std::vector<Cluster_validity> cluster_validity; ///< per-k table (empty when k was fixed)
   std::size_t calinski_harabasz_choice = 0;   ///< see `Number_of_clusters_selection`
+  /// k the silhouette index prefers
   std::size_t silhouette_choice = 0;
+  /// k the elbow of the error curve gives
   std::size_t elbow_choice = 0;
   double cell_edge = 0.;                      ///< edge of the cubic cells
   std::size_t number_of_cells = 0;            ///< distinct cells tested
   std::size_t rejected_outside = 0;           ///< cell centres outside the region
   std::size_t rejected_near_surface = 0;      ///< centres closer than their radius to a surface
   std::size_t number_of_bubbles = 0;          ///< bubbles placed
+  /// time spent clustering
   double clustering_seconds = 0.;
+  /// time spent placing bubbles in the cells
   double placement_seconds = 0.;
 };
 

@@ -56,6 +56,7 @@ What `relax_bubbles()` did in one region.
 */
 struct Region_relaxation_report
 {
+  /// the region
   std::size_t region = 0;
   std::size_t input_population = 0;   ///< interior bubbles given
   std::size_t population = 0;         ///< interior bubbles returned
@@ -72,8 +73,12 @@ struct Region_relaxation_report
   bool interrupted = false;           ///< the visitor asked to stop
   double kinetic_energy = 0.;         ///< at the end
   double max_displacement = 0.;       ///< of the last step, over the local radius
+  /// final overlap ratios against the bounds: bubbles below, inside, above them
+  ///@{
   std::size_t below = 0, inside = 0, above = 0; ///< final overlap ratios against the bounds
+  ///@}
   std::vector<std::size_t> overlap_histogram;   ///< bin k counts k <= alpha < k+1; the last bin is open
+  /// time spent on the region
   double seconds = 0.;
 };
 
@@ -84,11 +89,19 @@ and the totals.
 */
 struct Relaxation_report
 {
+  /// one entry per region with interior bubbles
   std::vector<Region_relaxation_report> regions;
   std::size_t steps = 0;          ///< sum over regions
   double bubble_steps = 0.;       ///< sum over regions
+  /// sums over regions of the fields of `Region_relaxation_report` with these names
+  ///@{
   std::size_t population = 0, added = 0, removed = 0, rejected = 0;
+  ///@}
+  /// sums over regions: bubbles whose overlap ratio is below, inside, above the bounds
+  ///@{
   std::size_t below = 0, inside = 0, above = 0;
+  ///@}
+  /// sum over regions of the overlap-ratio histograms
   std::vector<std::size_t> overlap_histogram;
   double seconds = 0.;            ///< wall-clock time of the whole call
 

@@ -48,7 +48,9 @@ struct Tetrahedralization_report
   std::size_t number_of_interior_points_on_surfaces = 0; ///< dropped: on an input triangle (no facet could avoid them)
   std::size_t number_of_interior_points_encroaching = 0; ///< dropped: in the ball of an input edge or triangle
   std::size_t number_of_interior_points_outside = 0;     ///< dropped: outside every region
+  /// Steiner points inserted on input edges
   std::size_t number_of_steiner_points_on_edges = 0;
+  /// Steiner points inserted on input triangles
   std::size_t number_of_steiner_points_on_triangles = 0;
   std::size_t number_of_triangles_kept_whole = 0;        ///< input triangles that are a single mesh facet
   std::size_t number_of_triangles_split = 0;             ///< input triangles made of several mesh facets
@@ -57,11 +59,13 @@ struct Tetrahedralization_report
   double time_recovery = 0.;                             ///< Steiner points until every input triangle is present
   double time_labelling = 0.;                            ///< regions, patches, vertex dimensions, clean-up
 
+  /// interior points that are not mesh vertices (all reasons)
   std::size_t number_of_interior_points_dropped() const
   {
     return number_of_interior_points_duplicate + number_of_interior_points_on_surfaces +
            number_of_interior_points_encroaching + number_of_interior_points_outside;
   }
+  /// Steiner points inserted, on edges and triangles
   std::size_t number_of_steiner_points() const
   {
     return number_of_steiner_points_on_edges + number_of_steiner_points_on_triangles;

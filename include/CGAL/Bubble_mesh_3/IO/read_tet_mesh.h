@@ -41,6 +41,7 @@ where a line applies, and says what is wrong.
 class Tet_mesh_read_error : public std::runtime_error
 {
 public:
+  /// an error with the message `what`
   explicit Tet_mesh_read_error(const std::string& what) : std::runtime_error(what) {}
 };
 
