@@ -1,0 +1,673 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_REMESHING_SIZING_FIELD_H
+#define CGAL_BUBBLE_MESH_3_REMESHING_SIZING_FIELD_H
+
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/geological_model_measures.h>
+#include <CGAL/Bubble_mesh_3/model_features.h>
+#include <CGAL/Bubble_mesh_3/internal/remeshing_parameters.h>
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Orthogonal_incremental_neighbor_search.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+The target edge length of the surface re-meshing (`remesh_surfaces()`) at a
+point of a patch. It is the smallest of
+
+- the patch size \f$ b_p = s \cdot f_p \cdot \min(g_{r^+}, g_{r^-}) \f$: the
+  user size \f$ s \f$ (absolute `edge_length`, or `relative_edge_length`
+  times the bounding-box diagonal, or by default the median input edge
+  length) times the patch factor \f$ f_p \f$ (`patch_size_factors`) and the
+  smaller factor of the patch's two regions (`region_size_factors`; region 0,
+  the outside, has none);
+- the local feature size rule \f$ \max(h_{min}, d / N) \f$, with \f$ d \f$ the
+  thickness at the point - the distance, along the surface normal, to the
+  nearest surface that is not adjacent (sharing no point with the patch), or
+  that is adjacent but nearly parallel (within 30 degrees: a pinch-out) - so
+  that a thin layer gets at least \f$ N \f$ = `elements_across_thickness`
+  edges across; on curves, \f$ d \f$ is the distance to the nearest patch or
+  curve that does not touch the curve (a fault tip near a horizon);
+  \f$ h_{min} \f$ = `minimum_edge_length` keeps pinch-outs from demanding an
+  endless refinement;
+- constraints added with `add_size_constraint()` (the re-meshing adds the
+  spacing of the curve points it must keep);
+
+graded: every value \f$ h_i \f$ given at a point \f$ x_i \f$ (all the rules
+above are sampled at points) bounds the field by
+\f$ h_i + (g - 1)\,|x - x_i| \f$, with \f$ g \f$ = `size_grading`, so that
+neighbouring edges differ by a ratio of at most about \f$ g \f$. Patch sizes
+are graded across the curves between patches the same way.
+
+Queries are not thread-safe (the point search is built lazily).
+
+\tparam GeomTraits a model of `Kernel`
+*/
+template <class GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel>
+class Remeshing_sizing_field
+{
+public:
+  typedef GeomTraits Geom_traits;                   ///< the geometric traits
+  typedef typename GeomTraits::Point_3 Point_3;     ///< point type
+  typedef typename GeomTraits::Vector_3 Vector_3;   ///< vector type
+
+private:
+  typedef typename GeomTraits::Triangle_3 Triangle_3;
+  typedef typename GeomTraits::Segment_3 Segment_3;
+  typedef CGAL::Search_traits_3<GeomTraits> Base_search_traits;
+  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Source_point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Source_point_map, Base_search_traits> Search_traits;
+  typedef CGAL::Distance_adapter<std::size_t, Source_point_map, CGAL::Euclidean_distance<Base_search_traits> >
+    Search_distance;
+  typedef CGAL::Orthogonal_incremental_neighbor_search<Search_traits, Search_distance> Incremental_search;
+  typedef typename Incremental_search::Tree Search_tree;
+  typedef CGAL::Orthogonal_k_neighbor_search<Search_traits, Search_distance, CGAL::Sliding_midpoint<Search_traits>,
+                                             Search_tree> Neighbor_search;
+  typedef CGAL::Fuzzy_sphere<Search_traits> Range;
+
+public:
+  /*!
+  builds the field of `model`, whose features are `features`
+  (`detect_model_features()`).
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{edge_length}
+      \cgalParamDescription{the user size \f$ s \f$ in model units}
+      \cgalParamType{`double`}
+      \cgalParamDefault{the median input edge length}
+    \cgalParamNEnd
+    \cgalParamNBegin{relative_edge_length}
+      \cgalParamDescription{the user size as a fraction of the bounding-box diagonal (if `edge_length` is not given)}
+      \cgalParamType{`double`}
+    \cgalParamNEnd
+    \cgalParamNBegin{region_size_factors}
+      \cgalParamDescription{a factor per region (entry 0 ignored; missing entries are 1)}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{all 1}
+    \cgalParamNEnd
+    \cgalParamNBegin{patch_size_factors}
+      \cgalParamDescription{a factor per patch (missing entries are 1)}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{all 1}
+    \cgalParamNEnd
+    \cgalParamNBegin{elements_across_thickness}
+      \cgalParamDescription{edges wanted across the local thickness; 0 turns the rule off}
+      \cgalParamType{`double`}
+      \cgalParamDefault{2}
+    \cgalParamNEnd
+    \cgalParamNBegin{minimum_edge_length}
+      \cgalParamDescription{floor of the thickness rule, in model units}
+      \cgalParamType{`double`}
+      \cgalParamDefault{a tenth of the smallest patch size}
+    \cgalParamNEnd
+    \cgalParamNBegin{size_grading}
+      \cgalParamDescription{largest size ratio between neighbouring edges (> 1)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{1.5}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+  */
+  template <class CGAL_NP_TEMPLATE_PARAMETERS>
+  Remeshing_sizing_field(const Geological_model_3<GeomTraits>& model, const Model_features& features,
+                         const CGAL_NP_CLASS& np = parameters::default_values())
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::is_default_parameter;
+
+    const Bbox_3 box = Bubble_mesh_3::bbox(model);
+    diagonal_ = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                          CGAL::square(box.zmax() - box.zmin()));
+
+    double size = 0.;
+    if(!is_default_parameter<CGAL_NP_CLASS, internal_np::edge_length_t>::value)
+      size = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
+    else if(!is_default_parameter<CGAL_NP_CLASS, internal_np::relative_edge_length_t>::value)
+      size = choose_parameter(get_parameter(np, internal_np::relative_edge_length), 0.) * diagonal_;
+    else
+      size = median_edge_length(model);
+    CGAL_precondition_msg(size > 0., "the target edge length must be positive");
+    user_size_ = size;
+
+    const std::vector<double> region_factors =
+      choose_parameter(get_parameter(np, internal_np::region_size_factors), std::vector<double>());
+    const std::vector<double> patch_factors =
+      choose_parameter(get_parameter(np, internal_np::patch_size_factors), std::vector<double>());
+    patch_size_.assign(model.number_of_patches(), size);
+    for(std::size_t p = 0; p < model.number_of_patches(); ++p)
+    {
+      double f = (p < patch_factors.size()) ? patch_factors[p] : 1.;
+      double g = std::numeric_limits<double>::infinity();
+      for(std::size_t r : {model.patch(p).positive_region, model.patch(p).negative_region})
+        if(r != 0) g = (std::min)(g, (r < region_factors.size()) ? region_factors[r] : 1.);
+      if(!std::isfinite(g)) g = 1.;
+      CGAL_precondition_msg(f > 0. && g > 0., "size factors must be positive");
+      patch_size_[p] = size * f * g;
+    }
+    max_patch_size_ = patch_size_.empty() ? size : *std::max_element(patch_size_.begin(), patch_size_.end());
+    const double min_patch_size =
+      patch_size_.empty() ? size : *std::min_element(patch_size_.begin(), patch_size_.end());
+
+    elements_across_ = choose_parameter(get_parameter(np, internal_np::elements_across_thickness), 2.);
+    minimum_size_ = choose_parameter(get_parameter(np, internal_np::minimum_edge_length), 0.1 * min_patch_size);
+    grading_ = choose_parameter(get_parameter(np, internal_np::size_grading), 1.5);
+    CGAL_precondition_msg(grading_ > 1., "size_grading must be above 1");
+    slope_ = grading_ - 1.;
+
+    add_curve_grading_sources(model, features);
+    if(elements_across_ > 0.)
+    {
+      add_thickness_sources(model, features);
+      add_curve_proximity_sources(model, features);
+    }
+  }
+
+  /// copies the values (the point search is rebuilt on demand)
+  Remeshing_sizing_field(const Remeshing_sizing_field& other) { copy_values(other); }
+  /// copies the values (the point search is rebuilt on demand)
+  Remeshing_sizing_field& operator=(const Remeshing_sizing_field& other)
+  {
+    if(this != &other) copy_values(other);
+    return *this;
+  }
+
+  /// the target edge length at `p`, a point of patch `patch`
+  double operator()(const Point_3& p, std::size_t patch) const { return cone(p, patch_size_[patch]); }
+
+  /// the target edge length at `p` whatever its patch (the largest patch size is the cap)
+  double operator()(const Point_3& p) const { return cone(p, max_patch_size_); }
+
+  /// the size \f$ b_p \f$ of patch `p` before the local rules
+  double patch_size(std::size_t p) const { return patch_size_[p]; }
+  /// the user size \f$ s \f$
+  double user_size() const { return user_size_; }
+  /// the floor of the thickness rule
+  double minimum_size() const { return minimum_size_; }
+  /// the size grading ratio
+  double size_grading() const { return grading_; }
+  /// the bounding-box diagonal of the model
+  double diagonal() const { return diagonal_; }
+  /// number of point values (thickness samples, grading samples, constraints) held
+  std::size_t number_of_point_sizes() const { return source_points_.size(); }
+  /// smallest thickness found (infinite if none is under the patch sizes times N)
+  double smallest_thickness() const { return smallest_thickness_; }
+
+  /// bounds the field by `h` at `p` (and by the graded value around it)
+  void add_size_constraint(const Point_3& p, double h)
+  {
+    if(!(h < max_patch_size_)) return;
+    source_points_.push_back(p);
+    source_sizes_.push_back(h);
+    min_source_ = (std::min)(min_source_, h);
+    levels_.clear();
+  }
+
+private:
+  template <class Model>
+  static double median_edge_length(const Model& model)
+  {
+    std::vector<double> lengths;
+    lengths.reserve(3 * model.number_of_triangles());
+    for(const auto& tri : model.triangles())
+      for(int k = 0; k < 3; ++k)
+        if(tri[k] < tri[(k + 1) % 3]) // each interior edge once per side is fine for a median
+          lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(model.point(tri[k]),
+                                                                              model.point(tri[(k + 1) % 3])))));
+    if(lengths.empty()) return 1.;
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    return lengths[lengths.size() / 2];
+  }
+
+  void add_source(const Point_3& p, double h)
+  {
+    if(!(h < max_patch_size_)) return;
+    source_points_.push_back(p);
+    source_sizes_.push_back(h);
+    min_source_ = (std::min)(min_source_, h);
+  }
+
+  // Points along every curve carrying the smallest size of the patches on it,
+  // so that a coarse patch grades down towards a finer neighbour.
+  void add_curve_grading_sources(const Geological_model_3<GeomTraits>& model, const Model_features& features)
+  {
+    for(const Model_features::Curve& c : features.curves)
+    {
+      double lo = std::numeric_limits<double>::infinity(), hi = 0.;
+      for(std::size_t p : c.patches)
+      {
+        lo = (std::min)(lo, patch_size_[p]);
+        hi = (std::max)(hi, patch_size_[p]);
+      }
+      if(!(lo < max_patch_size_)) continue; // no patch anywhere is coarser
+      for(std::size_t i = 0; i + 1 < c.points.size(); ++i)
+      {
+        const Point_3& a = model.point(c.points[i]);
+        const Point_3& b = model.point(c.points[i + 1]);
+        const double len = std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+        const std::size_t n = (std::max)(std::size_t(1), std::size_t(std::ceil(len / lo)));
+        for(std::size_t k = 0; k < n; ++k) add_source(a + (b - a) * (double(k) / double(n)), lo);
+      }
+      add_source(model.point(c.points.back()), lo);
+      (void)hi;
+    }
+  }
+
+  // Sample points of each patch, about half a patch size apart; thickness
+  // rays are cast from them along the triangle normal, both ways.
+  void add_thickness_sources(const Geological_model_3<GeomTraits>& model, const Model_features& features)
+  {
+    typedef CGAL::Simple_cartesian<double> SK; // plain doubles: a size heuristic on needle triangles
+    typedef typename SK::Point_3 SPoint;
+    typedef typename SK::Vector_3 SVector;
+    typedef typename SK::Segment_3 SSegment;
+    typedef typename SK::Triangle_3 STriangle;
+    typedef typename SK::Sphere_3 SSphere;
+    auto sp = [](const Point_3& p) { return SPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
+    (void)sp;
+    typedef typename std::vector<STriangle>::const_iterator Iterator;
+    typedef CGAL::AABB_triangle_primitive<SK, Iterator> Primitive;
+    typedef CGAL::AABB_traits<SK, Primitive> Traits;
+    typedef CGAL::AABB_tree<Traits> Tree;
+
+    std::vector<STriangle> triangles;
+    triangles.reserve(model.number_of_triangles());
+    for(const auto& tri : model.triangles())
+      triangles.push_back(STriangle(sp(model.point(tri[0])), sp(model.point(tri[1])), sp(model.point(tri[2]))));
+    if(triangles.empty()) return;
+    // the tree holds pieces of the triangles no longer than twice the
+    // smallest patch size: long needles would otherwise have boxes that
+    // every ray crosses
+    std::vector<STriangle> pieces;
+    std::vector<std::size_t> owner;
+    {
+      const double limit2 = CGAL::square(2. * *std::min_element(patch_size_.begin(), patch_size_.end()));
+      std::vector<std::pair<STriangle, std::size_t> > stack;
+      for(std::size_t t = 0; t < triangles.size(); ++t)
+      {
+        stack.push_back(std::make_pair(triangles[t], t));
+        while(!stack.empty())
+        {
+          const STriangle tr = stack.back().first;
+          stack.pop_back();
+          int k = 0;
+          double longest = 0.;
+          for(int i = 0; i < 3; ++i)
+          {
+            const double l = CGAL::squared_distance(tr.vertex(i), tr.vertex((i + 1) % 3));
+            if(l > longest) { longest = l; k = i; }
+          }
+          if(longest <= limit2 || pieces.size() > 50 * triangles.size())
+          {
+            pieces.push_back(tr);
+            owner.push_back(t);
+            continue;
+          }
+          const SPoint m = CGAL::midpoint(tr.vertex(k), tr.vertex((k + 1) % 3));
+          stack.push_back(std::make_pair(STriangle(tr.vertex(k), m, tr.vertex((k + 2) % 3)), t));
+          stack.push_back(std::make_pair(STriangle(m, tr.vertex((k + 1) % 3), tr.vertex((k + 2) % 3)), t));
+        }
+      }
+    }
+    Tree tree(pieces.begin(), pieces.end());
+
+    // patch adjacency: sharing a point
+    const std::size_t np = model.number_of_patches();
+    std::vector<std::vector<std::size_t> > point_patches(model.number_of_points());
+    for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+      for(std::size_t v : model.triangle(t))
+      {
+        std::vector<std::size_t>& pp = point_patches[v];
+        if(std::find(pp.begin(), pp.end(), model.patch_of_triangle(t)) == pp.end())
+          pp.push_back(model.patch_of_triangle(t));
+      }
+    std::vector<std::vector<char> > adjacent(np, std::vector<char>(np, 0));
+    for(const std::vector<std::size_t>& pp : point_patches)
+      for(std::size_t a : pp)
+        for(std::size_t b : pp) adjacent[a][b] = 1;
+
+    std::vector<SVector> unit_normal(triangles.size());
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      SVector n = triangles[t].supporting_plane().orthogonal_vector();
+      const double l = std::sqrt(CGAL::to_double(n.squared_length()));
+      unit_normal[t] = (l > 0.) ? n / l : SVector(0, 0, 0);
+    }
+    const double parallel_cos = std::cos(30. * 3.14159265358979323846 / 180.);
+
+    typedef typename Tree::template Intersection_and_primitive_id<SSegment>::Type Hit;
+    std::vector<Hit> hits;
+    // thickness at `x` of patch `p` along the unit normal `n`
+    auto thickness = [&](const SPoint& x, const SVector& n, std::size_t p, double reach) {
+      double best = std::numeric_limits<double>::infinity();
+      // start a hair off the surface: a segment starting on a triangle is a degenerate case for the predicates
+      const double lift = 1e-7 * diagonal_;
+      for(int side = -1; side <= 1; side += 2)
+      {
+        const SVector dir = n * double(side);
+        const SSegment ray(x + dir * lift, x + dir * reach);
+        hits.clear();
+        tree.all_intersections(ray, std::back_inserter(hits));
+        for(const Hit& h : hits)
+        {
+          const std::size_t s = owner[std::size_t(h.second - pieces.begin())];
+          const std::size_t q = model.patch_of_triangle(s);
+          if(q == p) continue;
+          if(adjacent[p][q] && std::abs(CGAL::to_double(unit_normal[s] * n)) < parallel_cos) continue;
+          const SPoint* hp = boost::get<SPoint>(&h.first);
+          double d = 0.;
+          if(hp != nullptr) d = std::sqrt(CGAL::to_double(CGAL::squared_distance(x, *hp)));
+          else
+          {
+            const SSegment* hs = boost::get<SSegment>(&h.first);
+            if(hs == nullptr) continue;
+            d = std::sqrt(CGAL::to_double((std::min)(CGAL::squared_distance(x, hs->source()),
+                                                     CGAL::squared_distance(x, hs->target()))));
+          }
+          // a neighbour touched where the sample sits on the shared border: no thickness
+          if(d <= 2. * lift) continue;
+          best = (std::min)(best, d);
+        }
+      }
+      return best;
+    };
+    auto record = [&](const SPoint& x, double d) {
+      smallest_thickness_ = (std::min)(smallest_thickness_, d);
+      add_source(Point_3(x.x(), x.y(), x.z()), (std::max)(minimum_size_, d / elements_across_));
+    };
+
+    for(std::size_t p = 0; p < np; ++p)
+    {
+      const double b = patch_size_[p];
+      const double reach = elements_across_ * b; // thicker than this: the rule does not bind
+      // samples: the patch's points (with the area-weighted normal around them) ...
+      std::map<std::size_t, SVector> point_normal;
+      for(std::size_t t : features.patch_triangles[p])
+        for(std::size_t v : model.triangle(t))
+        {
+          const SVector an = triangles[t].supporting_plane().orthogonal_vector() * 0.5;
+          auto it = point_normal.find(v);
+          if(it == point_normal.end()) point_normal[v] = an;
+          else it->second = it->second + an;
+        }
+      std::map<std::size_t, double> point_thickness;
+      for(const auto& pn : point_normal)
+      {
+        const double l = std::sqrt(CGAL::to_double(pn.second.squared_length()));
+        if(!(l > 0.)) continue;
+        const double d = thickness(sp(model.point(pn.first)), pn.second / l, p, reach);
+        if(d < reach)
+        {
+          record(sp(model.point(pn.first)), d);
+          point_thickness[pn.first] = d;
+        }
+      }
+      // ... and a grid inside large triangles: two sizes apart first, then,
+      // where that finds a thin spot, one local size apart (the field grows
+      // by half the distance to a sample, so sparse samples would let it
+      // reach 1.5 times the wanted size between them)
+      for(std::size_t t : features.patch_triangles[p])
+      {
+        const STriangle& tri = triangles[t];
+        const SVector& n = unit_normal[t];
+        if(n == CGAL::NULL_VECTOR) continue;
+        double longest = 0.;
+        for(int k = 0; k < 3; ++k)
+          longest = (std::max)(longest, std::sqrt(CGAL::to_double(
+                                          CGAL::squared_distance(tri.vertex(k), tri.vertex((k + 1) % 3)))));
+        double thinnest = reach;
+        for(std::size_t v : model.triangle(t))
+        {
+          auto it = point_thickness.find(v);
+          if(it != point_thickness.end()) thinnest = (std::min)(thinnest, it->second);
+        }
+        auto sample_grid = [&](double spacing, std::size_t cap) {
+          const std::size_t m = (std::min)(cap, std::size_t(std::ceil(longest / spacing)));
+          for(std::size_t i = 0; i <= m; ++i)
+            for(std::size_t j = 0; i + j <= m; ++j)
+            {
+              if((i == 0 && j == 0) || i == m || j == m) continue; // the corners are sampled above
+              const double u = double(i) / double(m), v = double(j) / double(m);
+              const SPoint x = tri.vertex(0) + (tri.vertex(1) - tri.vertex(0)) * u + (tri.vertex(2) - tri.vertex(0)) * v;
+              const double d = thickness(x, n, p, reach);
+              if(d < reach)
+              {
+                record(x, d);
+                thinnest = (std::min)(thinnest, d);
+              }
+            }
+        };
+        if(longest > 2. * b) sample_grid(2. * b, 32);
+        const double local = (std::max)(minimum_size_, thinnest / elements_across_);
+        if(thinnest < reach && longest > local) sample_grid(local, 256);
+      }
+    }
+  }
+
+  // Distance from curve points to the patches and curves that do not touch
+  // the curve: a fault tip close under a horizon needs small elements there.
+  void add_curve_proximity_sources(const Geological_model_3<GeomTraits>& model, const Model_features& features)
+  {
+    typedef CGAL::Simple_cartesian<double> SK; // plain doubles: a size heuristic on needle triangles
+    typedef typename SK::Point_3 SPoint;
+    typedef typename SK::Vector_3 SVector;
+    typedef typename SK::Segment_3 SSegment;
+    typedef typename SK::Triangle_3 STriangle;
+    typedef typename SK::Sphere_3 SSphere;
+    auto sp = [](const Point_3& p) { return SPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
+    (void)sp;
+    typedef typename std::vector<STriangle>::const_iterator Triangle_iterator;
+    typedef CGAL::AABB_triangle_primitive<SK, Triangle_iterator> Triangle_primitive;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<SK, Triangle_primitive> > Triangle_tree;
+    typedef typename std::vector<SSegment>::const_iterator Segment_iterator;
+    typedef CGAL::AABB_segment_primitive<SK, Segment_iterator> Segment_primitive;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<SK, Segment_primitive> > Segment_tree;
+    
+
+    if(features.curves.empty()) return;
+    std::vector<STriangle> triangles;
+    for(const auto& tri : model.triangles())
+      triangles.push_back(STriangle(sp(model.point(tri[0])), sp(model.point(tri[1])), sp(model.point(tri[2]))));
+    std::vector<SSegment> segments;
+    std::vector<std::size_t> segment_curve;
+    for(std::size_t c = 0; c < features.curves.size(); ++c)
+      for(std::size_t i = 0; i + 1 < features.curves[c].points.size(); ++i)
+      {
+        segments.push_back(SSegment(sp(model.point(features.curves[c].points[i])),
+                                     sp(model.point(features.curves[c].points[i + 1]))));
+        segment_curve.push_back(c);
+      }
+    Triangle_tree ttree(triangles.begin(), triangles.end());
+    Segment_tree stree(segments.begin(), segments.end());
+
+    // which curves and patches touch each curve (share a point with it)
+    std::vector<std::vector<std::size_t> > point_curves(model.number_of_points());
+    for(std::size_t c = 0; c < features.curves.size(); ++c)
+      for(std::size_t v : features.curves[c].points)
+        if(point_curves[v].empty() || point_curves[v].back() != c) point_curves[v].push_back(c);
+    std::vector<std::vector<std::size_t> > point_patches(model.number_of_points());
+    for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+      for(std::size_t v : model.triangle(t))
+      {
+        std::vector<std::size_t>& pp = point_patches[v];
+        if(std::find(pp.begin(), pp.end(), model.patch_of_triangle(t)) == pp.end())
+          pp.push_back(model.patch_of_triangle(t));
+      }
+
+    std::vector<Triangle_iterator> near_triangles;
+    std::vector<Segment_iterator> near_segments;
+    for(std::size_t c = 0; c < features.curves.size(); ++c)
+    {
+      const Model_features::Curve& curve = features.curves[c];
+      std::vector<std::size_t> touching_curves, touching_patches;
+      for(std::size_t v : curve.points)
+      {
+        touching_curves.insert(touching_curves.end(), point_curves[v].begin(), point_curves[v].end());
+        touching_patches.insert(touching_patches.end(), point_patches[v].begin(), point_patches[v].end());
+      }
+      std::sort(touching_curves.begin(), touching_curves.end());
+      std::sort(touching_patches.begin(), touching_patches.end());
+      double b = 0.;
+      for(std::size_t p : curve.patches) b = (std::max)(b, patch_size_[p]);
+      const double reach = elements_across_ * b;
+      for(std::size_t i = 0; i + 1 < curve.points.size(); ++i)
+      {
+        const SPoint a = sp(model.point(curve.points[i]));
+        const SPoint e = sp(model.point(curve.points[i + 1]));
+        const double len = std::sqrt(CGAL::to_double(CGAL::squared_distance(a, e)));
+        const std::size_t n = (std::min)(std::size_t(200), (std::max)(std::size_t(1),
+                                                                      std::size_t(std::ceil(len / (0.5 * b)))));
+        for(std::size_t k = 0; k <= n; ++k)
+        {
+          const SPoint x = a + (e - a) * (double(k) / double(n));
+          const SSphere ball(x, reach * reach);
+          double best2 = reach * reach;
+          near_triangles.clear();
+          ttree.all_intersected_primitives(ball, std::back_inserter(near_triangles));
+          for(Triangle_iterator it : near_triangles)
+          {
+            const std::size_t q = model.patch_of_triangle(std::size_t(it - triangles.begin()));
+            if(std::binary_search(touching_patches.begin(), touching_patches.end(), q)) continue;
+            best2 = (std::min)(best2, CGAL::to_double(CGAL::squared_distance(x, *it)));
+          }
+          near_segments.clear();
+          stree.all_intersected_primitives(ball, std::back_inserter(near_segments));
+          for(Segment_iterator it : near_segments)
+          {
+            const std::size_t d = segment_curve[std::size_t(it - segments.begin())];
+            if(std::binary_search(touching_curves.begin(), touching_curves.end(), d)) continue;
+            best2 = (std::min)(best2, CGAL::to_double(CGAL::squared_distance(x, *it)));
+          }
+          if(best2 < reach * reach)
+          {
+            const double d = std::sqrt(best2);
+            smallest_thickness_ = (std::min)(smallest_thickness_, d);
+            add_source(Point_3(x.x(), x.y(), x.z()), (std::max)(minimum_size_, d / elements_across_));
+          }
+        }
+      }
+    }
+  }
+
+  void copy_values(const Remeshing_sizing_field& o)
+  {
+    diagonal_ = o.diagonal_; user_size_ = o.user_size_; max_patch_size_ = o.max_patch_size_;
+    elements_across_ = o.elements_across_; minimum_size_ = o.minimum_size_; grading_ = o.grading_;
+    slope_ = o.slope_; min_source_ = o.min_source_; smallest_thickness_ = o.smallest_thickness_;
+    patch_size_ = o.patch_size_; source_points_ = o.source_points_; source_sizes_ = o.source_sizes_;
+    levels_.clear(); // rebuilt on demand
+  }
+
+  // Sources are grouped in levels of sizes within a factor 2, each with its
+  // own search: a level whose smallest size plus the slope times the
+  // distance cannot beat the best value so far is left at once.
+  void build_tree() const
+  {
+    if(!levels_.empty() || source_points_.empty()) return;
+    std::vector<std::size_t> order(source_points_.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return source_sizes_[a] < source_sizes_[b]; });
+    std::size_t first = 0;
+    while(first < order.size())
+    {
+      const double lo = source_sizes_[order[first]];
+      std::size_t last = first;
+      while(last < order.size() && source_sizes_[order[last]] <= 2. * lo) ++last;
+      std::shared_ptr<Level> level(new Level);
+      level->min_size = lo;
+      for(std::size_t k = first; k < last; ++k)
+      {
+        level->points.push_back(source_points_[order[k]]);
+        level->sizes.push_back(source_sizes_[order[k]]);
+      }
+      std::vector<std::size_t> ids(level->points.size());
+      for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
+      Source_point_map pmap = CGAL::make_property_map(static_cast<const std::vector<Point_3>&>(level->points));
+      level->tree.reset(new Search_tree(ids.begin(), ids.end(), typename Search_tree::Splitter(), Search_traits(pmap)));
+      level->tree->build();
+      levels_.push_back(level);
+      first = last;
+    }
+  }
+
+  double cone(const Point_3& p, double cap) const
+  {
+    if(source_points_.empty() || !(min_source_ < cap)) return cap;
+    build_tree();
+    double best = cap;
+    std::vector<std::size_t>& near = scratch_;
+    for(const std::shared_ptr<Level>& level : levels_)
+    {
+      if(!(level->min_size < best)) break;
+      Source_point_map pmap = CGAL::make_property_map(static_cast<const std::vector<Point_3>&>(level->points));
+      // the nearest source of the level first, then all that can still do better
+      Neighbor_search nearest(*level->tree, p, 1, 0., true, Search_distance(pmap));
+      double d1 = 0.;
+      for(auto it = nearest.begin(); it != nearest.end(); ++it)
+      {
+        d1 = std::sqrt(CGAL::to_double(it->second));
+        best = (std::min)(best, level->sizes[it->first] + slope_ * d1);
+      }
+      if(!(level->min_size + slope_ * d1 < best)) continue;
+      const double radius = (best - level->min_size) / slope_;
+      near.clear();
+      level->tree->search(std::back_inserter(near), Range(p, radius, 0., Search_traits(pmap)));
+      for(std::size_t i : near)
+        best = (std::min)(best, level->sizes[i] + slope_ * std::sqrt(CGAL::to_double(
+                                                                 CGAL::squared_distance(p, level->points[i]))));
+    }
+    return best;
+  }
+
+  struct Level
+  {
+    double min_size = 0.;
+    std::vector<Point_3> points;
+    std::vector<double> sizes;
+    std::unique_ptr<Search_tree> tree;
+  };
+
+  double diagonal_ = 0., user_size_ = 0., max_patch_size_ = 0.;
+  double elements_across_ = 2., minimum_size_ = 0., grading_ = 1.5, slope_ = 0.5;
+  double min_source_ = std::numeric_limits<double>::infinity();
+  double smallest_thickness_ = std::numeric_limits<double>::infinity();
+  std::vector<double> patch_size_;
+  std::vector<Point_3> source_points_;
+  std::vector<double> source_sizes_;
+  mutable std::vector<std::shared_ptr<Level> > levels_;
+  mutable std::vector<std::size_t> scratch_;
+};
+
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_REMESHING_SIZING_FIELD_H

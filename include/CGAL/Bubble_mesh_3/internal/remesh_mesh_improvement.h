@@ -1,0 +1,217 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_INTERNAL_REMESH_MESH_IMPROVEMENT_H
+#define CGAL_BUBBLE_MESH_3_INTERNAL_REMESH_MESH_IMPROVEMENT_H
+
+// Clean-up of one re-meshed patch in 3D: the charts were triangulated in
+// their planes, where a tilted chart looks squeezed; edge flips that raise
+// the smaller angle of the two triangles (Delaunay in the surface) and
+// vertex moves towards the centre of their neighbours, projected back onto
+// the input patch and kept only when the worst angle around does not get
+// worse, fix that and smooth the seams between charts. Curve edges are never
+// flipped and curve points never move.
+
+#include <CGAL/Bubble_mesh_3/internal/remesh_chart_triangulation.h>
+#include <CGAL/Bubble_mesh_3/internal/remesh_triangle_tree.h>
+#include <CGAL/Bubble_mesh_3/model_features.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <deque>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+namespace internal {
+
+template <class Point_3>
+typename Kernel_traits<Point_3>::Kernel::Vector_3 remesh_unit_normal(const Point_3& a, const Point_3& b,
+                                                                      const Point_3& c)
+{
+  const auto n = CGAL::cross_product(b - a, c - a);
+  const double l = std::sqrt(CGAL::to_double(n.squared_length()));
+  return l > 0. ? n / l : n;
+}
+
+// Flips edges of `triangles` (indices into `points`) that are not in
+// `constrained` while the smaller angle of the two triangles grows, the new
+// triangles face the same way and the two old ones are nearly coplanar
+// (`max_dihedral` degrees). Returns the number of flips.
+template <class Point_3>
+std::size_t flip_to_improve_angles(const std::vector<Point_3>& points, std::vector<std::array<std::size_t, 3> >& triangles,
+                                   const Edge_set& constrained, double max_dihedral)
+{
+  typedef std::pair<std::size_t, std::size_t> Edge;
+  std::unordered_map<Edge, std::vector<std::size_t>, Edge_key_hash> edge_tris;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(int k = 0; k < 3; ++k) edge_tris[edge_key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
+  std::deque<Edge> queue;
+  std::vector<Edge> all;
+  for(const auto& e : edge_tris)
+    if(e.second.size() == 2 && !constrained.count(e.first)) all.push_back(e.first);
+  std::sort(all.begin(), all.end()); // deterministic order
+  queue.assign(all.begin(), all.end());
+  const double cos_dihedral = std::cos(max_dihedral * 3.14159265358979323846 / 180.);
+  std::size_t flips = 0;
+  std::size_t budget = 50 * triangles.size() + 100;
+  auto replace = [&](const Edge& e, std::size_t from, std::size_t to) {
+    for(std::size_t& t : edge_tris[e])
+      if(t == from) t = to;
+  };
+  while(!queue.empty() && budget-- > 0)
+  {
+    const Edge e = queue.front();
+    queue.pop_front();
+    if(constrained.count(e)) continue;
+    const auto it = edge_tris.find(e);
+    if(it == edge_tris.end() || it->second.size() != 2) continue;
+    const std::size_t t1 = it->second[0], t2 = it->second[1];
+    // t1 = (a, b, c) with the edge a->b, t2 = (b, a, d)
+    int k1 = -1;
+    for(int k = 0; k < 3; ++k)
+      if(edge_key(triangles[t1][k], triangles[t1][(k + 1) % 3]) == e) k1 = k;
+    const std::size_t a = triangles[t1][k1], b = triangles[t1][(k1 + 1) % 3], c = triangles[t1][(k1 + 2) % 3];
+    int k2 = -1;
+    for(int k = 0; k < 3; ++k)
+      if(triangles[t2][k] == b && triangles[t2][(k + 1) % 3] == a) k2 = k;
+    if(k2 < 0) continue; // inconsistent orientation: leave it
+    const std::size_t d = triangles[t2][(k2 + 2) % 3];
+    if(c == d || edge_tris.count(edge_key(c, d))) continue;
+    const Point_3 &pa = points[a], &pb = points[b], &pc = points[c], &pd = points[d];
+    const auto n1 = remesh_unit_normal(pa, pb, pc), n2 = remesh_unit_normal(pb, pa, pd);
+    if(CGAL::to_double(n1 * n2) < cos_dihedral) continue;
+    const double old_min = (std::min)(remesh_min_angle(pa, pb, pc), remesh_min_angle(pb, pa, pd));
+    const double new_min = (std::min)(remesh_min_angle(pa, pd, pc), remesh_min_angle(pd, pb, pc));
+    if(!(new_min > old_min + 1e-6)) continue;
+    const auto ns = n1 + n2;
+    const auto m1 = remesh_unit_normal(pa, pd, pc), m2 = remesh_unit_normal(pd, pb, pc);
+    if(!(CGAL::to_double(m1 * ns) > 0.) || !(CGAL::to_double(m2 * ns) > 0.) || !(CGAL::to_double(m1 * m2) > 0.))
+      continue;
+    // flip: t1 = (a, d, c), t2 = (d, b, c)
+    triangles[t1] = std::array<std::size_t, 3>{{a, d, c}};
+    triangles[t2] = std::array<std::size_t, 3>{{d, b, c}};
+    edge_tris.erase(e);
+    replace(edge_key(b, c), t1, t2);
+    replace(edge_key(a, d), t2, t1);
+    edge_tris[edge_key(c, d)] = std::vector<std::size_t>{t1, t2};
+    ++flips;
+    for(const Edge& n : {edge_key(a, d), edge_key(d, b), edge_key(b, c), edge_key(c, a)})
+      if(!constrained.count(n)) queue.push_back(n);
+  }
+  return flips;
+}
+
+// Moves free vertices to better places, projected onto the input patch:
+// towards the centre of their neighbours, and for a vertex with a poor
+// triangle around it also towards the apex that would make that triangle
+// equilateral (the only cure next to a curve, whose points cannot move). A
+// move is kept when the smallest angle around the vertex reaches at least
+// min(its old value, `angle_goal`) - and grows if it was under the goal -
+// and no triangle turns over. Returns the number of moves.
+template <class GeomTraits>
+std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& points,
+                                 const std::vector<std::array<std::size_t, 3> >& triangles,
+                                 const std::vector<char>& fixed, const Remesh_triangle_tree<GeomTraits>& patch_tree,
+                                 double angle_goal)
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  typedef typename GeomTraits::Vector_3 Vector_3;
+  std::unordered_map<std::size_t, std::vector<std::size_t> > incident;
+  std::vector<std::size_t> vertices;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(std::size_t v : triangles[t])
+    {
+      std::vector<std::size_t>& inc = incident[v];
+      if(inc.empty()) vertices.push_back(v);
+      inc.push_back(t);
+    }
+  std::sort(vertices.begin(), vertices.end());
+  std::size_t moves = 0;
+  std::vector<Vector_3> old_normals;
+  std::vector<Point_3> candidates;
+  for(std::size_t v : vertices)
+  {
+    if(fixed[v]) continue;
+    const std::vector<std::size_t>& inc = incident[v];
+    Vector_3 sum(0, 0, 0);
+    std::size_t count = 0;
+    double old_min = 180.;
+    old_normals.clear();
+    candidates.clear();
+    for(std::size_t t : inc)
+    {
+      const auto& tri = triangles[t];
+      for(std::size_t w : tri)
+        if(w != v)
+        {
+          sum = sum + (points[w] - CGAL::ORIGIN);
+          ++count;
+        }
+      const double a = remesh_min_angle(points[tri[0]], points[tri[1]], points[tri[2]]);
+      old_min = (std::min)(old_min, a);
+      old_normals.push_back(remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]));
+      if(a < angle_goal)
+      {
+        // the apex over the opposite edge that makes this triangle equilateral
+        const int k = int(std::find(tri.begin(), tri.end(), v) - tri.begin());
+        const Point_3& p = points[tri[(k + 1) % 3]];
+        const Point_3& q = points[tri[(k + 2) % 3]];
+        const Point_3 m = CGAL::midpoint(p, q);
+        Vector_3 up = (points[v] - m) - (q - p) * (CGAL::to_double((points[v] - m) * (q - p)) /
+                                                   CGAL::to_double((q - p).squared_length()));
+        const double l = std::sqrt(CGAL::to_double(up.squared_length()));
+        if(l > 0.)
+        {
+          const Point_3 apex = m + up * (0.8660254 * std::sqrt(CGAL::to_double((q - p).squared_length())) / l);
+          candidates.push_back(apex);
+          candidates.push_back(CGAL::midpoint(apex, points[v]));
+        }
+      }
+    }
+    if(count == 0) continue;
+    const Point_3 centre = CGAL::ORIGIN + sum / double(count);
+    candidates.push_back(centre);
+    if(old_min < angle_goal) candidates.push_back(CGAL::midpoint(centre, points[v]));
+    const Point_3 old = points[v];
+    Point_3 best = old;
+    double best_min = old_min;
+    for(const Point_3& c : candidates)
+    {
+      points[v] = patch_tree.closest_point(c);
+      double new_min = 180.;
+      bool folded = false;
+      for(std::size_t i = 0; i < inc.size() && !folded; ++i)
+      {
+        const auto& tri = triangles[inc[i]];
+        new_min = (std::min)(new_min, remesh_min_angle(points[tri[0]], points[tri[1]], points[tri[2]]));
+        const Vector_3 n = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
+        if(!(CGAL::to_double(n * old_normals[i]) > 0.5)) folded = true;
+      }
+      if(folded) continue;
+      // under the goal: only a real gain counts; above it, the centre is preferred
+      const bool better = (old_min < angle_goal) ? (new_min > best_min + 1e-6)
+                                                 : (best == old && new_min >= angle_goal);
+      if(better)
+      {
+        best = points[v];
+        best_min = new_min;
+      }
+    }
+    points[v] = best;
+    if(!(best == old)) ++moves;
+  }
+  return moves;
+}
+
+} // namespace internal
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_INTERNAL_REMESH_MESH_IMPROVEMENT_H
