@@ -68,7 +68,10 @@ struct Surface_remeshing_report
   double share_of_small_angle_triangles = 0.; ///< output triangles with an angle under the bound, share
   double share_of_edges_within_size = 0.;     ///< output edges with length in [0.5, 1.5] of the target there
   double input_share_of_edges_within_size = 0.; ///< the same for the input edges and the same targets
+  /// shortest and longest output edge
+  ///@{
   double min_edge_length = 0., max_edge_length = 0.; ///< output edge lengths
+  ///@}
 
   double max_point_distance = 0.;     ///< largest distance of an output point to its input patch, over the diagonal
   double max_curve_distance = 0.;     ///< largest Hausdorff distance between an output curve and its input polyline, over the diagonal
@@ -80,7 +83,10 @@ struct Surface_remeshing_report
   std::vector<double> output_volumes; ///< `region_volumes()` of the output
   double max_relative_volume_error = 0.; ///< largest |output - input| / input over the regions 1..n
 
+  /// seconds spent on the features, the sizing field, the curves, the patches and the measures
+  ///@{
   double time_features = 0., time_sizing = 0., time_curves = 0., time_patches = 0., time_measures = 0.;
+  ///@}
   double time = 0.; ///< total
 };
 
