@@ -61,6 +61,7 @@ struct Sliver_removal_report
 
   bool perturbation_done = false;          ///< step 1 ran
   bool perturbation_skipped_nonzero_weights = false; ///< step 1 not run: the triangulation has weights
+  /// passes of the perturbation over the slivers
   std::size_t number_of_perturbation_passes = 0;
   std::size_t number_of_vertices_tried = 0; ///< interior vertices of slivers the perturbation worked on
   std::size_t number_of_moves = 0;          ///< accepted moves
@@ -77,6 +78,7 @@ struct Sliver_removal_report
   std::string polish_reverted_because; ///< which check, when undone
 
   bool time_limit_reached = false; ///< a step stopped, or was skipped, for lack of time
+  /// seconds spent in step 1, the perturbation
   double time_perturbation = 0.;
   double time_exudation = 0.;      ///< including the checks and the back-up copy
   double time_polish = 0.;         ///< including the checks and the back-up copy
