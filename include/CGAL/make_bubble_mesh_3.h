@@ -12,8 +12,10 @@
 #include <CGAL/Bubble_mesh_3/Surface_bubble_sizing_field.h>
 #include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
+#include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remove_slivers.h>
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 
@@ -31,6 +33,8 @@ What `make_bubble_mesh_3()` did, stage by stage.
 */
 struct Bubble_mesh_report
 {
+  bool surfaces_remeshed = false;             ///< whether stage 0 ran (`remesh_input_surfaces`)
+  Surface_remeshing_report surface_remeshing; ///< stage 0 (`remesh_surfaces()`), if it ran
   std::size_t number_of_surface_bubbles = 0;  ///< one per model point
   std::size_t number_of_initial_bubbles = 0;  ///< interior bubbles placed (stage 2)
   std::size_t number_of_relaxed_bubbles = 0;  ///< interior bubbles after relaxation and population control
@@ -38,6 +42,7 @@ struct Bubble_mesh_report
   Relaxation_report relaxation;               ///< stages 3 and 4
   Tetrahedralization_report tetrahedralization; ///< stage 5
   Sliver_removal_report sliver_removal;       ///< stage 6 (`remove_slivers()`)
+  double time_surface_remeshing = 0.;         ///< seconds
   double time_surface_bubbles = 0.;           ///< seconds
   double time_placement = 0.;                 ///< seconds, clustering included
   double time_relaxation = 0.;                ///< seconds
@@ -48,40 +53,33 @@ struct Bubble_mesh_report
 namespace internal_np {
 enum bubble_mesh_report_t { bubble_mesh_report };
 enum stage_callback_t { stage_callback };
+enum remesh_input_surfaces_t { remesh_input_surfaces };
 } // namespace internal_np
 
 namespace parameters {
 
 /// \ingroup PkgBubbleMesh3Ref
 /// `make_bubble_mesh_3()` fills the `Bubble_mesh_report` pointed to
-inline Named_function_parameters<Bubble_mesh_report*, internal_np::bubble_mesh_report_t>
-bubble_mesh_report(Bubble_mesh_report* r)
-{
-  return Named_function_parameters<Bubble_mesh_report*, internal_np::bubble_mesh_report_t>(r);
-}
-/// \cond SKIP_IN_MANUAL
-template <class T, class Tag, class Base>
-Named_function_parameters<Bubble_mesh_report*, internal_np::bubble_mesh_report_t, Named_function_parameters<T, Tag, Base> >
-bubble_mesh_report(Bubble_mesh_report* r, const Named_function_parameters<T, Tag, Base>& np)
-{
-  return {r, np};
-}
-/// \endcond
-
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Bubble_mesh_report*, bubble_mesh_report)
+/// \ingroup PkgBubbleMesh3Ref
+/// the type of the `stage_callback` parameter
+typedef std::function<void(const std::string&)> Stage_callback;
 /// \ingroup PkgBubbleMesh3Ref
 /// `make_bubble_mesh_3()` calls `f(stage_name)` when a stage starts (for a progress line)
-inline Named_function_parameters<std::function<void(const std::string&)>, internal_np::stage_callback_t>
-stage_callback(const std::function<void(const std::string&)>& f)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Stage_callback, stage_callback)
+
+/// \ingroup PkgBubbleMesh3Ref
+/// `make_bubble_mesh_3()` re-meshes the model's surfaces with `remesh_surfaces()` first
+inline Named_function_parameters<bool, internal_np::remesh_input_surfaces_t> remesh_input_surfaces(bool b)
 {
-  return Named_function_parameters<std::function<void(const std::string&)>, internal_np::stage_callback_t>(f);
+  return Named_function_parameters<bool, internal_np::remesh_input_surfaces_t>(b);
 }
 /// \cond SKIP_IN_MANUAL
 template <class T, class Tag, class Base>
-Named_function_parameters<std::function<void(const std::string&)>, internal_np::stage_callback_t,
-                          Named_function_parameters<T, Tag, Base> >
-stage_callback(const std::function<void(const std::string&)>& f, const Named_function_parameters<T, Tag, Base>& np)
+Named_function_parameters<bool, internal_np::remesh_input_surfaces_t, Named_function_parameters<T, Tag, Base> >
+remesh_input_surfaces(bool b, const Named_function_parameters<T, Tag, Base>& np)
 {
-  return {f, np};
+  return {b, np};
 }
 /// \endcond
 
@@ -99,6 +97,12 @@ input surfaces recovered and the cells labelled by region
 (`tetrahedralize_bubbles()`), and sliver removal by moving interior vertices
 only (`remove_slivers()`; pass `perturb_interior_vertices(false)` to skip it).
 
+With `remesh_input_surfaces(true)`, the surfaces are first re-meshed with
+bubbles (`remesh_surfaces()`, stage 0) and the stages run on the re-meshed
+model: same regions and patches, so the mesh is labelled as the input is.
+Use it when the input triangles are poor: tetrahedra at a triangle with a
+tiny angle are poor whatever the bubbles do inside.
+
 The model must be valid (`validate_geological_model()`); the stages assume
 it. Each stage is a free function that can be called alone; this function
 only chains them, passing `np` to each, so every named parameter of the
@@ -110,19 +114,24 @@ stages is accepted here too.
     \cgalParamType{`Bubble_mesh_report*`}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{remesh_input_surfaces}
+    \cgalParamDescription{re-mesh the surfaces first (`remesh_surfaces()`, which takes its named parameters, e.g. `edge_length`, from `np` too)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
   \cgalParamNBegin{stage_callback}
     \cgalParamDescription{called with the stage's name when it starts}
     \cgalParamType{`std::function<void(const std::string&)>`}
     \cgalParamDefault{none}
   \cgalParamNEnd
-  \cgalParamNExtra{the named parameters of `place_surface_bubbles()`, `Surface_bubble_sizing_field`,
+  \cgalParamNExtra{the named parameters of `remesh_surfaces()` (when asked), `place_surface_bubbles()`, `Surface_bubble_sizing_field`,
     `place_initial_bubbles()`, `relax_bubbles()`, `tetrahedralize_bubbles()` and `remove_slivers()`}
 \cgalNamedParamsEnd
 
 \throws Geological_model_error or Tetrahedralization_error, naming the element at fault
 */
 template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
-Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& model,
+Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& input_model,
                                       Mesh_complex_3<GeomTraits>& c3t3,
                                       const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -135,6 +144,20 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& mode
   auto start = [&](const char* name) { if(stage) stage(name); };
 
   Real_timer timer;
+  // the stages below see the re-meshed model: same regions and patches, new points and triangles
+  Geological_model_3<GeomTraits> remeshed;
+  report->surfaces_remeshed = choose_parameter(get_parameter(np, internal_np::remesh_input_surfaces), false);
+  if(report->surfaces_remeshed)
+  {
+    start("surface remeshing");
+    timer.start();
+    report->surface_remeshing = remesh_surfaces(input_model, remeshed, np);
+    timer.stop();
+    report->time_surface_remeshing = timer.time();
+    timer.reset();
+  }
+  const Geological_model_3<GeomTraits>& model = report->surfaces_remeshed ? remeshed : input_model;
+
   start("surface bubbles");
   timer.start();
   const std::vector<Bubble<GeomTraits> > surface_bubbles = place_surface_bubbles(model, np);

@@ -6,6 +6,7 @@
 #ifndef CGAL_BUBBLE_MESH_3_IO_READER_PARAMETERS_H
 #define CGAL_BUBBLE_MESH_3_IO_READER_PARAMETERS_H
 
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <map>
@@ -28,31 +29,17 @@ enum region_assignment_file_t { region_assignment_file };
 
 namespace parameters {
 
-#define CGAL_BUBBLE_MESH_3_IO_PARAMETER(NAME, TYPE)                                              \
-  inline Named_function_parameters<TYPE, internal_np::NAME##_t> NAME(const TYPE& v)              \
-  {                                                                                              \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t>(v);                            \
-  }                                                                                              \
-  template <class T, class Tag, class Base>                                                      \
-  Named_function_parameters<TYPE, internal_np::NAME##_t, Named_function_parameters<T, Tag, Base> > \
-  NAME(const TYPE& v, const Named_function_parameters<T, Tag, Base>& np)                         \
-  {                                                                                              \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t,                                \
-                                     Named_function_parameters<T, Tag, Base> >(v, np);           \
-  }
-
 /// \ingroup PkgBubbleMesh3IO
 /// readers merge points closer than this fraction of the bounding-box diagonal;
 /// 0 (the default) merges identical coordinates only
-CGAL_BUBBLE_MESH_3_IO_PARAMETER(merge_tolerance, double)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, merge_tolerance)
 /// \ingroup PkgBubbleMesh3IO
 /// `read_gocad_tsurf()`: the regions each TSurf object separates, instead of one body per object
-CGAL_BUBBLE_MESH_3_IO_PARAMETER(region_assignment, Region_assignment)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Region_assignment, region_assignment)
 /// \ingroup PkgBubbleMesh3IO
 /// `read_gocad_tsurf()`: a text file giving the region assignment, see `read_region_assignment()`
-CGAL_BUBBLE_MESH_3_IO_PARAMETER(region_assignment_file, std::string)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::string, region_assignment_file)
 
-#undef CGAL_BUBBLE_MESH_3_IO_PARAMETER
 
 } // namespace parameters
 

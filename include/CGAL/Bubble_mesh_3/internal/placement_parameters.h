@@ -14,6 +14,7 @@
 // CGAL tags reused here: `random_seed` (clustering and silhouette subsample),
 // `number_of_iterations` (Lloyd iterations of `K_means_clustering`).
 
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
@@ -57,54 +58,35 @@ using CGAL::parameters::default_values;
 using CGAL::parameters::random_seed;
 using CGAL::parameters::number_of_iterations;
 
-// One function pair per tag: the one-argument form starts a chain, the
-// two-argument form appends to an existing chain (CGAL's or ours).
-#define CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(TYPE, NAME)                                     \
-  inline CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t>                          \
-  NAME(TYPE value)                                                                             \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t>(value);                \
-  }                                                                                            \
-  template <class T, class Tag, class Base>                                                    \
-  CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                                 \
-                                  CGAL::Named_function_parameters<T, Tag, Base> >              \
-  NAME(TYPE value, const CGAL::Named_function_parameters<T, Tag, Base>& np)                    \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                        \
-                                           CGAL::Named_function_parameters<T, Tag, Base> >(    \
-      value, np);                                                                              \
-  }
-
 /// fixed number of clusters per region; 0 (default) chooses it in [min, max]
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, number_of_clusters)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_clusters)
 /// smallest number of clusters tried (default 2)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, min_number_of_clusters)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, min_number_of_clusters)
 /// largest number of clusters tried (default 10)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, max_number_of_clusters)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, max_number_of_clusters)
 /// Lloyd stops when no centre moves more than this fraction of the bounding-box diagonal (default 1e-4)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, convergence_tolerance)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, convergence_tolerance)
 /// k-means runs from this many k-means++ seedings and keeps the smallest SSE (default 3)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, number_of_restarts)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_restarts)
 /// above this many points the silhouette is computed on a seeded subsample of this size (default 2000)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::size_t, silhouette_sample_size)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, silhouette_sample_size)
 /// surface bubble radius = factor * mean incident edge length (default 0.5)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, surface_radius_factor)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_radius_factor)
 /// cell edge = factor * (r_max + r_min) / 2 (default 1)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, cell_edge_factor)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, cell_edge_factor)
 /// a candidate must be at least factor * its radius from every surface triangle (default 1)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, surface_clearance_factor)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_clearance_factor)
 /// surface bubble j is a weight point when l_ij < factor * (R0 + r_j) (default 1.5)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(double, interaction_range_factor)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, interaction_range_factor)
 /// weights of the weight-point rule (default `Radius_weighting::INVERSE_DISTANCE`)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(Radius_weighting, radius_weighting)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Radius_weighting, radius_weighting)
 /// entry r multiplies the wanted radius in region r; missing entries are 1 (default empty)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::vector<double>, region_scale_factors)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<double>, region_scale_factors)
 /// process regions (and candidates) with TBB when it is linked (default true); the result does not depend on it
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(bool, parallel_regions)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, parallel_regions)
 /// where `place_initial_bubbles()` writes one `Region_placement_statistics` per region (default none)
-CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER(std::vector<Region_placement_statistics>*, placement_statistics)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<Region_placement_statistics>*, placement_statistics)
 
-#undef CGAL_BUBBLE_MESH_3_PLACEMENT_PARAMETER
 
 /// the `KMeansClustering` model used by `place_initial_bubbles()` (default `K_means_clustering`)
 template <class Clustering>
