@@ -4,8 +4,9 @@
 // Author(s)     : Bubble_mesh_3 team
 //
 // Meshes a multi-body GOCAD Model3d (.ml) file stage by stage, calling each
-// free function that make_bubble_mesh_3() chains, then writes the quality
-// report of the mesh as text, JSON and SVG histograms.
+// free function that make_bubble_mesh_3() chains, with the last region made
+// denser through the sizing field, then writes the quality report of the
+// mesh as text, JSON and SVG histograms.
 //
 // Usage: mesh_gocad_model [model.ml|.ts|.obj] [output_basename]
 // Default: data/two_layers_and_fault.ml (two layers, a fault ending inside
@@ -54,9 +55,12 @@ int main(int argc, char** argv)
     BM::write_summary_text(std::cout, BM::summarize_geological_model(model));
 
     // Stage 1: one fixed bubble on every model point; their radii define the
-    // sizing field of the interior bubbles.
+    // sizing field of the interior bubbles. Here the last region is wanted
+    // denser than its surfaces imply: its bubble radii are scaled by 0.6.
     const std::vector<Bubble> surface = BM::place_surface_bubbles(model);
-    const BM::Surface_bubble_sizing_field<K> sizing(model, surface);
+    std::vector<double> scale(model.number_of_regions() + 1, 1.);
+    scale.back() = 0.6;
+    const BM::Surface_bubble_sizing_field<K> sizing(model, surface, BM::parameters::region_scale_factors(scale));
 
     // Stage 2: k-means clustering of each region's surface points, then
     // initial interior bubbles on a lattice per cluster.
@@ -111,6 +115,14 @@ int main(int argc, char** argv)
     std::size_t meshed_regions = 0;
     for(const BM::Region_quality& q : quality.regions) meshed_regions += (q.number_of_tetrahedra > 0);
     assert(meshed_regions == model.number_of_regions());
+    // the denser region has smaller tetrahedra on average than the first one
+    const BM::Region_quality& first = quality.regions.front();
+    const BM::Region_quality& denser = quality.regions.back();
+    std::cout << "mean tetrahedron volume: " << first.volume / double(first.number_of_tetrahedra) << " in region "
+              << first.region << ", " << denser.volume / double(denser.number_of_tetrahedra) << " in region "
+              << denser.region << " (radii x 0.6)\n";
+    assert(model.number_of_regions() < 2 ||
+           denser.volume / double(denser.number_of_tetrahedra) < first.volume / double(first.number_of_tetrahedra));
     std::cout << "wrote " << base << ".vtu and " << base << "_quality.{txt,json,svg}\n";
   }
   catch(const std::exception& e)
