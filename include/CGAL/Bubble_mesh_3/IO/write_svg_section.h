@@ -8,6 +8,7 @@
 
 #include <CGAL/Bubble_mesh_3/Bubble.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
@@ -35,34 +36,18 @@ enum section_bubbles_t { section_bubbles };
 
 namespace parameters {
 
-#define CGAL_BUBBLE_MESH_3_SVG_PARAMETER(NAME, TYPE)                                              \
-  template <class T_>                                                                            \
-  Named_function_parameters<TYPE, internal_np::NAME##_t> NAME(const T_& v)                       \
-  {                                                                                              \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t>(TYPE(v));                      \
-  }                                                                                              \
-  template <class T_, class T, class Tag, class Base>                                             \
-  Named_function_parameters<TYPE, internal_np::NAME##_t, Named_function_parameters<T, Tag, Base> > \
-  NAME(const T_& v, const Named_function_parameters<T, Tag, Base>& np)                           \
-  {                                                                                              \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t,                                \
-                                     Named_function_parameters<T, Tag, Base> >(TYPE(v), np);     \
-  }
-
 /// \ingroup PkgBubbleMesh3IO
 /// `write_svg_section()`, `write_svg_bubble_section()`: width of the picture in pixels (default 900)
-CGAL_BUBBLE_MESH_3_SVG_PARAMETER(svg_width, double)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, svg_width)
 /// \ingroup PkgBubbleMesh3IO
 /// `write_svg_section()`, `write_svg_bubble_section()`: a title above the picture (default none)
-CGAL_BUBBLE_MESH_3_SVG_PARAMETER(svg_title, std::string)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::string, svg_title)
 /// \ingroup PkgBubbleMesh3IO
 /// `write_svg_section()`: draw the outline of every cut cell (default `true`)
-CGAL_BUBBLE_MESH_3_SVG_PARAMETER(draw_cell_edges, bool)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, draw_cell_edges)
 /// \ingroup PkgBubbleMesh3IO
 /// `write_svg_section()`: the names of the regions for the legend, entry `r` for region `r` (default: numbers)
-CGAL_BUBBLE_MESH_3_SVG_PARAMETER(region_names, std::vector<std::string>)
-
-#undef CGAL_BUBBLE_MESH_3_SVG_PARAMETER
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<std::string>, region_names)
 
 /// \ingroup PkgBubbleMesh3IO
 /// `write_svg_section()`: bubbles whose balls the plane cuts are drawn over the cells as
