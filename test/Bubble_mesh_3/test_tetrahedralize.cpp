@@ -7,9 +7,10 @@
 // fault meeting a horizon at small angles), on the package's generated model
 // and on the real GOCAD models when ../shared is there.
 //
-// Optional arguments: a GOCAD Model3d file (.ml) to test alone, verbosely, and
-// the lattice spacing as a share of its box's smallest side (default 0.05);
-// modelA2 and modelA5 are left to such runs (about a minute each).
+// Optional arguments: a model file (.ml, .ts, .obj) to test alone, verbosely,
+// and the lattice spacing as a share of its box's smallest side (default
+// 0.05). CTest runs the bundled model and each real model that way, as
+// separate entries (test_tetrahedralize.runs), so that ctest -j spreads them.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -23,8 +24,8 @@
 #include <CGAL/Bubble_mesh_3/make_layered_model.h>
 #define BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
 #endif
-#if __has_include(<CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>)
-#include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
+#if __has_include(<CGAL/Bubble_mesh_3/IO/read_geological_model.h>)
+#include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
 #define BUBBLE_MESH_3_TEST_HAS_GOCAD_READER
 #endif
 
@@ -38,6 +39,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -230,6 +232,8 @@ void check_mesh(const std::string& name, const Model& m, const C3T3& c3t3, const
 
   // cells: positive, labelled, volumes per region (relative to the box centre: fewer lost digits)
   std::vector<double> volume(m.number_of_regions() + 1, 0.);
+  double smallest_dihedral = 180.;
+  std::size_t flat_cells = 0, flat_surface_cells = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
   {
     const int r = c3t3.subdomain_index(c);
@@ -239,6 +243,24 @@ void check_mesh(const std::string& name, const Model& m, const C3T3& c3t3, const
     assert(CGAL::orientation(p[0], p[1], p[2], p[3]) == CGAL::POSITIVE);
     const Vector_3 a = p[1] - p[0], b = p[2] - p[0], d = p[3] - p[0];
     volume[std::size_t(r)] += CGAL::cross_product(a, b) * d / 6.;
+    // flat cells: four (nearly) coplanar points, a dihedral angle of about 0
+    double dihedral = 180.;
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+      {
+        int o[2], n = 0;
+        for(int x = 0; x < 4; ++x)
+          if(x != i && x != j) o[n++] = x;
+        dihedral = (std::min)(dihedral, std::abs(CGAL::approximate_dihedral_angle(p[i], p[j], p[o[0]], p[o[1]])));
+      }
+    smallest_dihedral = (std::min)(smallest_dihedral, dihedral);
+    if(dihedral < 1e-6)
+    {
+      ++flat_cells;
+      bool on_surfaces = true;
+      for(int i = 0; i < 4; ++i) on_surfaces = on_surfaces && c3t3.in_dimension(c->vertex(i)) == 2;
+      if(on_surfaces) ++flat_surface_cells;
+    }
   }
   const std::vector<double> expected = BM::region_volumes(m);
   double worst_volume = 0.;
@@ -366,7 +388,9 @@ void check_mesh(const std::string& name, const Model& m, const C3T3& c3t3, const
             << ", area rel. error <= " << worst_area << " (" << slivers
             << " slivers within perimeter x Steiner deviation), " << exact_checks << " facets exactly on their triangle, "
             << tolerance_checks << " with Steiner points within " << worst_distance << " (<= " << tolerance
-            << ")\n  time (s): filtering " << report.time_filtering << ", insertion " << report.time_insertion
+            << ")\n  smallest dihedral angle " << smallest_dihedral << " degrees; " << flat_cells
+            << " cells under 1e-6 degrees, " << flat_surface_cells << " of them with all vertices on surfaces"
+            << "\n  time (s): filtering " << report.time_filtering << ", insertion " << report.time_insertion
             << ", recovery " << report.time_recovery << ", labelling " << report.time_labelling << std::endl;
 }
 
@@ -549,32 +573,26 @@ void test_errors()
 }
 
 #ifdef BUBBLE_MESH_3_TEST_HAS_GOCAD_READER
-// a real model with a jittered lattice of interior points (spacing: a share
-// of the box's smallest side), default parameters
+// a model file (any format read_geological_model() reads) with a jittered
+// lattice of interior points (spacing: a share of the box's smallest side),
+// default parameters; SKIP when the file is not there (../shared is optional)
 void test_file(const std::string& file, double spacing_ratio, bool verbose)
 {
+  if(!std::ifstream(file))
+  {
+    std::cout << "SKIP: " << file << " is not there" << std::endl;
+    return;
+  }
+  const std::clock_t start = std::clock();
   Model m;
-  BM::IO::read_gocad_model3d(file, m);
+  BM::IO::read_geological_model(file, m);
   const CGAL::Bbox_3 box = BM::bbox(m);
   const double size = (std::min)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
   C3T3 c3t3;
   const Report report = BM::tetrahedralize_bubbles(m, jittered_lattice(box, spacing_ratio * size, 7), c3t3,
                                                    CGAL::parameters::verbose(verbose));
   check_mesh(file, m, c3t3, report);
-}
-
-void test_real_models()
-{
-  const std::string dir = BUBBLE_MESH_3_SHARED_DATA_DIR;
-  if(!std::ifstream(dir + "/modelA1.ml") || !std::ifstream(dir + "/CloudSpin_fixed.ml"))
-  {
-    std::cout << "SKIP: the real GOCAD models are not in " << dir << std::endl;
-    return;
-  }
-  // raw GOCAD surfaces (a quarter of their triangles have angles under 1 degree)
-  test_file(dir + "/modelA1.ml", 0.05, false);
-  test_file(dir + "/CloudSpin_fixed.ml", 0.05, false);
-  std::cout << "not run here (about a minute each): test_tetrahedralize " << dir << "/modelA2.ml, and modelA5.ml"
+  std::cout << file << ": " << double(std::clock() - start) / CLOCKS_PER_SEC << " s CPU (meshing and checks)"
             << std::endl;
 }
 #endif
@@ -602,10 +620,6 @@ int main(int argc, char** argv)
   std::cout << "SKIP: make_layered_model.h is not there" << std::endl;
 #endif
   test_errors();
-#ifdef BUBBLE_MESH_3_TEST_HAS_GOCAD_READER
-  test_real_models();
-#else
-  std::cout << "SKIP: read_gocad_model3d.h is not there" << std::endl;
-#endif
+  // the bundled model and the real models: one ctest entry each (test_tetrahedralize.runs)
   return EXIT_SUCCESS;
 }
