@@ -333,9 +333,12 @@ public:
   flat when its four vertices lie on one plane group (exactly coplanar input
   triangles joined by vertices). The surface is the boundary between the
   cells below and above the plane (w.r.t. the group's normal); a flat cell is
-  put above, unless one of its facets spans several triangles of the group
-  (such a facet cannot be a surface facet): then it goes to the side of the
-  cell across that facet.
+  put outside the model when the whole group bounds it on one side (there,
+  nothing on that side keeps the near-planar circumsphere of a flat cell from
+  being empty, so flat cells are common on outer boundaries, and outside they
+  leave no zero-volume tetrahedron in the mesh), else above; unless one of its
+  facets spans several triangles of the group (such a facet cannot be a
+  surface facet): then it goes to the side of the cell across that facet.
   */
   bool surface_facets_on_triangle(std::size_t t, std::vector<Surface_facet>& out) const
   {
@@ -398,7 +401,7 @@ public:
           else if(forced != s) consistent = false;
         }
       }
-      const int final_color = forced == 0 ? 1 : forced;
+      const int final_color = forced != 0 ? forced : group_outside_[g] != 0 ? group_outside_[g] : 1;
       for(Cell_handle x : component) color[x] = final_color;
       return final_color;
     };
@@ -629,8 +632,18 @@ private:
       {
         g = group_normal_.size();
         group_normal_.push_back(triangle_normal(t));
+        group_outside_.push_back(2); // not known yet
       }
       plane_group_[t] = g;
+      // the side (w.r.t. the group's normal) where the model's outside is, if
+      // every triangle of the group has it on that same side
+      const auto& patch = model_.patch(model_.patch_of_triangle(t));
+      const int along = triangle_normal(t) * group_normal_[g] > 0 ? 1 : -1;
+      const int outside = patch.positive_region == 0 && patch.negative_region != 0   ? along
+                          : patch.negative_region == 0 && patch.positive_region != 0 ? -along
+                                                                                    : 0;
+      int& o = group_outside_[g];
+      o = (o == 2 || o == outside) ? outside : 0;
     }
 
     // for each edge end, the sine of the smallest angle to another edge there
@@ -1225,6 +1238,7 @@ private:
   std::vector<char> triangle_dirty_, edge_dirty_; // to check again: an insertion changed cells around them
   std::vector<std::size_t> plane_group_;                             // of each triangle
   std::vector<Vector_3> group_normal_;
+  std::vector<int> group_outside_; // +1 / -1: the model's outside is above / below the whole group; 0: neither
   Point_3 centroid_; // of the model points: strictly inside their convex hull
   std::vector<std::array<double, 2> > end_closeness_; // sine of the smallest angle at each end of each edge
   std::vector<std::vector<std::size_t> > edge_points_;    // vertex ids along each edge, ends included
