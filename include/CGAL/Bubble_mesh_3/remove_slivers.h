@@ -6,6 +6,7 @@
 #ifndef CGAL_BUBBLE_MESH_3_REMOVE_SLIVERS_H
 #define CGAL_BUBBLE_MESH_3_REMOVE_SLIVERS_H
 
+#include <CGAL/Bubble_mesh_3/internal/insert_sliver_vertices.h>
 #include <CGAL/Bubble_mesh_3/internal/perturb_interior_vertices.h>
 #include <CGAL/Bubble_mesh_3/internal/sliver_parameters.h>
 
@@ -53,14 +54,17 @@ struct Sliver_removal_report
   double min_dihedral_angle_before = 0.;                  ///< smallest dihedral angle, before
   double min_dihedral_angle_after_perturbation = 0.;      ///< ... after step 1
   double min_dihedral_angle_after_exudation = 0.;         ///< ... after step 2
+  double min_dihedral_angle_after_polish = 0.;            ///< ... after step 3
   double min_dihedral_angle_after = 0.;                   ///< ... at the end
   std::size_t number_of_slivers_before = 0;               ///< cells under the bound, before
   std::size_t number_of_slivers_after_perturbation = 0;   ///< ... after step 1
   std::size_t number_of_slivers_after_exudation = 0;      ///< ... after step 2
+  std::size_t number_of_slivers_after_polish = 0;         ///< ... after step 3
   std::size_t number_of_slivers_after = 0;                ///< ... at the end
 
   bool perturbation_done = false;          ///< step 1 ran
   bool perturbation_skipped_nonzero_weights = false; ///< step 1 not run: the triangulation has weights
+  bool skipped_not_regular = false; ///< steps 1 and 2 not run: the triangulation is not regular (step 3 or 4 ran before)
   /// passes of the perturbation over the slivers
   std::size_t number_of_perturbation_passes = 0;
   std::size_t number_of_vertices_tried = 0; ///< interior vertices of slivers the perturbation worked on
@@ -77,11 +81,20 @@ struct Sliver_removal_report
   bool polish_reverted = false; ///< step 3 ran but broke a check, or did not help, and was undone
   std::string polish_reverted_because; ///< which check, when undone
 
+  bool insertion_done = false;                  ///< step 4 ran
+  /// passes of the interior-vertex insertion
+  std::size_t number_of_insertion_passes = 0;
+  std::size_t number_of_slivers_tried = 0;      ///< cells under the bound step 4 worked on
+  std::size_t number_of_vertices_inserted = 0;  ///< new interior vertices (one per replaced cavity)
+  std::size_t number_of_slivers_forced = 0;     ///< cells under the bound left by step 4: an edge on a complex facet with an angle under 10 degrees
+
   bool time_limit_reached = false; ///< a step stopped, or was skipped, for lack of time
   /// seconds spent in step 1, the perturbation
   double time_perturbation = 0.;
   double time_exudation = 0.;      ///< including the checks and the back-up copy
   double time_polish = 0.;         ///< including the checks and the back-up copy
+  /// seconds spent inserting interior vertices
+  double time_insertion = 0.;
   double time = 0.;                ///< everything
 };
 
@@ -90,12 +103,15 @@ inline std::ostream& operator<<(std::ostream& os, const Sliver_removal_report& r
 {
   os << "sliver removal (bound " << r.sliver_bound << " degrees): min dihedral " << r.min_dihedral_angle_before
      << " -> " << r.min_dihedral_angle_after_perturbation << " (perturbation) -> "
-     << r.min_dihedral_angle_after_exudation << " (exudation) -> " << r.min_dihedral_angle_after << "\n"
+     << r.min_dihedral_angle_after_exudation << " (exudation) -> " << r.min_dihedral_angle_after_polish
+     << " (polish) -> " << r.min_dihedral_angle_after << " (insertion)\n"
      << "  cells under the bound: " << r.number_of_slivers_before << " -> " << r.number_of_slivers_after_perturbation
-     << " -> " << r.number_of_slivers_after_exudation << " -> " << r.number_of_slivers_after << " (of "
+     << " -> " << r.number_of_slivers_after_exudation << " -> " << r.number_of_slivers_after_polish << " -> "
+     << r.number_of_slivers_after << " (of "
      << r.number_of_cells_after << " cells)\n"
      << "  perturbation: " << (r.perturbation_done ? "" : "not run, ")
-     << (r.perturbation_skipped_nonzero_weights ? "weights not zero, " : "") << r.number_of_perturbation_passes
+     << (r.perturbation_skipped_nonzero_weights ? "weights not zero, " : "")
+     << (r.skipped_not_regular ? "triangulation not regular, " : "") << r.number_of_perturbation_passes
      << " passes, " << r.number_of_vertices_tried << " vertices tried, " << r.number_of_moves << " moves of "
      << r.number_of_vertices_moved << " vertices, " << r.number_of_candidates_rejected << " positions refused\n"
      << "  exudation: "
@@ -103,8 +119,11 @@ inline std::ostream& operator<<(std::ostream& os, const Sliver_removal_report& r
      << " (code " << int(r.exudation_code) << ")"
      << ", polish: " << (r.polish_done ? "kept" : (r.polish_reverted ? "undone, " + r.polish_reverted_because : "not run"))
      << (r.time_limit_reached ? ", time limit reached" : "") << "\n"
+     << "  insertion: " << (r.insertion_done ? "" : "not run, ") << r.number_of_insertion_passes << " passes, "
+     << r.number_of_slivers_tried << " slivers tried, " << r.number_of_vertices_inserted << " vertices inserted, "
+     << r.number_of_slivers_forced << " left at surface angles under 10 degrees\n"
      << "  time (s): perturbation " << r.time_perturbation << ", exudation " << r.time_exudation << ", polish "
-     << r.time_polish << ", total " << r.time;
+     << r.time_polish << ", insertion " << r.time_insertion << ", total " << r.time;
   return os;
 }
 
@@ -307,7 +326,7 @@ private:
 Removes slivers (tetrahedra with a small dihedral angle) from a mesh while
 keeping its surfaces: no vertex on a complex facet ever moves, every facet of
 the complex stays with its surface patch index, every cell keeps its region,
-hence region volumes do not change. Three steps:
+hence region volumes do not change. Four steps:
 
 1. **Perturbation** of interior vertices: each vertex of dimension 3 of a cell
    whose smallest dihedral angle is under `sliver_bound`, worst cell first, is
@@ -335,6 +354,20 @@ hence region volumes do not change. Three steps:
    longer a regular triangulation**: after it, do not call `exude_mesh_3()`,
    `remove_slivers()` or anything else that needs the empty-sphere property;
    writers and quality measures are fine.
+4. **Insertion** of interior vertices: each cell still under `sliver_bound`,
+   worst first, with the cells around it (one to three rings of neighbours
+   across facets not in the complex, in its region) is replaced by the star
+   of a new vertex placed in the kernel of that cavity (its centroid, the
+   centroid of the cavity's vertices, and seeded random points around the
+   best so far), if the new cells beat the cells they replace (larger
+   smallest angle, no more cells under the bound). The cavity's boundary is
+   kept, so complex facets, surface vertices and region volumes are too. This
+   reaches the slivers with all four vertices on surfaces (across thin layers,
+   between Steiner points of recovered surfaces), which step 1 cannot move.
+   Cells with an edge on a complex facet that has an angle under 10 degrees
+   are left: the surface forces them (the quality report counts them apart).
+   Like step 3, it leaves a triangulation that is **no longer regular**; a
+   later call skips steps 1 and 2 (the report says so) and runs step 4 again.
 
 With `maximum_running_time` the result depends on the speed of the machine;
 without it (the default), the same input and seed give the same mesh.
@@ -371,18 +404,25 @@ without it (the default), the same input and seed give the same mesh.
     \cgalParamType{bool}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{insert_interior_vertices}
+    \cgalParamDescription{whether step 4 runs}
+    \cgalParamType{bool}
+    \cgalParamDefault{the value of `perturb_interior_vertices`, so that switching the interior-vertex
+      work off switches both steps off}
+  \cgalParamNEnd
   \cgalParamNBegin{perturbation_radius_factor}
     \cgalParamDescription{largest move, as a fraction of the vertex's shortest incident edge}
     \cgalParamType{double}
     \cgalParamDefault{`0.3`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_perturbation_directions}
-    \cgalParamDescription{seeded random positions tried per vertex and pass}
+    \cgalParamDescription{seeded random positions tried per vertex and pass (step 1), and per cavity
+      and search round (step 4)}
     \cgalParamType{unsigned int}
     \cgalParamDefault{`8`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{largest number of perturbation passes}
+    \cgalParamDescription{largest number of passes of step 1, and of step 4}
     \cgalParamType{std::size_t}
     \cgalParamDefault{`5`}
   \cgalParamNEnd
@@ -420,6 +460,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   const bool perturb = choose_parameter(get_parameter(np, internal_np::perturb_interior_vertices), true);
   const bool exude = choose_parameter(get_parameter(np, internal_np::exude_slivers), false);
   const bool polish = choose_parameter(get_parameter(np, internal_np::polish_interior), false);
+  const bool insert = choose_parameter(get_parameter(np, internal_np::insert_interior_vertices), perturb);
   const double radius_factor = choose_parameter(get_parameter(np, internal_np::perturbation_radius_factor), 0.3);
   const unsigned int directions =
     choose_parameter(get_parameter(np, internal_np::number_of_perturbation_directions), 8u);
@@ -471,8 +512,14 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
     because = broken;
   };
 
+  // steps 1 and 2 need the empty-sphere property, which steps 3 and 4 of an
+  // earlier call may have taken away
+  const bool regular = !(perturb || exude) || r.number_of_slivers_before == 0 ||
+                       internal::is_regular_triangulation(c3t3.triangulation());
+  r.skipped_not_regular = !regular;
+
   // 1. perturbation
-  if(perturb && r.number_of_slivers_before > 0)
+  if(perturb && regular && r.number_of_slivers_before > 0)
   {
     CGAL::Real_timer timer;
     timer.start();
@@ -494,7 +541,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
 
   // 2. exudation, checked; a copy to go back to, since the exuder's own
   // guarantees are not part of its documentation
-  if(exude && r.number_of_slivers_after_perturbation > 0)
+  if(exude && regular && r.number_of_slivers_after_perturbation > 0)
   {
     CGAL::Real_timer timer;
     timer.start();
@@ -562,6 +609,31 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
       keep_or_undo(snapshot, backup, broken, true, r.polish_done, r.polish_reverted, r.polish_reverted_because);
     }
     r.time_polish = timer.time();
+  }
+
+  r.min_dihedral_angle_after_polish = r.min_dihedral_angle_after;
+  r.number_of_slivers_after_polish = r.number_of_slivers_after;
+
+  // 4. insertion, for what no move reached
+  if(insert && r.number_of_slivers_after > 0)
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    const double left = limit - total.time();
+    if(left <= 0.) r.time_limit_reached = true;
+    else
+    {
+      internal::Sliver_vertex_inserter<C3T3> inserter(c3t3, bound, directions, seed);
+      const internal::Insertion_statistics s = inserter(passes, left);
+      r.insertion_done = true;
+      r.number_of_insertion_passes = s.number_of_passes;
+      r.number_of_slivers_tried = s.number_of_slivers_tried;
+      r.number_of_vertices_inserted = s.number_of_vertices_inserted;
+      r.number_of_slivers_forced = s.number_of_slivers_forced;
+      if(s.time_limit_reached) r.time_limit_reached = true;
+      record(r.min_dihedral_angle_after, r.number_of_slivers_after);
+    }
+    r.time_insertion = timer.time();
   }
 
   r.number_of_cells_after = c3t3.number_of_cells_in_complex();

@@ -118,6 +118,24 @@ struct Cell_set_quality
   }
 };
 
+// A new cell of the complex: in `region`; a facet takes the label its
+// neighbour across it carries (that neighbour survived, so its label is right).
+template <class C3T3>
+void label_new_cell(C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c,
+                    const typename C3T3::Subdomain_index& region)
+{
+  c3t3.add_to_complex(c, region);
+  for(int i = 0; i < 4; ++i)
+  {
+    const auto m = c->neighbor(i);
+    const int mi = m->index(c);
+    if(!c3t3.is_in_complex(m, mi)) continue;
+    c3t3.set_surface_patch_index(c, i, c3t3.surface_patch_index(m, mi));
+    c->set_facet_surface_center(i, m->get_facet_surface_center(mi));
+    c->set_facet_surface_center_index(i, m->get_facet_surface_center_index(mi));
+  }
+}
+
 /// What the perturbation did.
 struct Perturbation_statistics
 {
@@ -258,22 +276,6 @@ private:
     for(int k = 0, j = 0; k < 4; ++k)
       if(k != f.second) q[j++] = coordinates(f.first->vertex(k));
     return smallest_dihedral_angle(p, q[0], q[1], q[2]);
-  }
-
-  // a facet of a new cell takes the label its surviving neighbour carries
-  void copy_facet_label_from_mirror(Cell_handle c, int i) const
-  {
-    const Cell_handle m = c->neighbor(i);
-    const int mi = m->index(c);
-    if(!c3t3_.is_in_complex(m, mi)) return;
-    c3t3_.set_surface_patch_index(c, i, c3t3_.surface_patch_index(m, mi));
-    c->set_facet_surface_center(i, m->get_facet_surface_center(mi));
-    c->set_facet_surface_center_index(i, m->get_facet_surface_center_index(mi));
-  }
-  void label_new_cell(Cell_handle c, const Subdomain_index& region) const
-  {
-    c3t3_.add_to_complex(c, region);
-    for(int i = 0; i < 4; ++i) copy_facet_label_from_mirror(c, i);
   }
 
   // A vertex can move if it is a volume vertex, on no complex facet, and all
@@ -432,7 +434,7 @@ private:
     std::unordered_map<Cell_handle, double> hole_angles;
     for(Cell_handle c : hole)
     {
-      label_new_cell(c, region);
+      label_new_cell(c3t3_, c, region);
       hole_angles[c] = cell_angle(c);
     }
 
@@ -471,7 +473,7 @@ private:
     c3t3_.set_index(nv, index);
     std::vector<Cell_handle> new_star;
     tr_.incident_cells(nv, std::back_inserter(new_star));
-    for(Cell_handle c : new_star) label_new_cell(c, region);
+    for(Cell_handle c : new_star) label_new_cell(c3t3_, c, region);
     if(!improved) return 0;
     ++stats.number_of_moves;
     return 1;

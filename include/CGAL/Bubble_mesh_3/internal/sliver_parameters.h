@@ -15,6 +15,7 @@
 // `exude_mesh_3()`; the function below lives in `CGAL::Bubble_mesh_3::parameters`
 // and does not collide with it.
 
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 namespace CGAL {
@@ -25,6 +26,7 @@ enum sliver_bound_t { sliver_bound };
 enum perturb_interior_vertices_t { perturb_interior_vertices };
 enum exude_slivers_t { exude_slivers };
 enum polish_interior_t { polish_interior };
+enum insert_interior_vertices_t { insert_interior_vertices };
 enum perturbation_radius_factor_t { perturbation_radius_factor };
 enum number_of_perturbation_directions_t { number_of_perturbation_directions };
 } // namespace internal_np
@@ -37,41 +39,28 @@ using CGAL::parameters::number_of_iterations;
 using CGAL::parameters::maximum_running_time;
 using CGAL::parameters::verbose;
 
-#define CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER(TYPE, NAME)                                        \
-  inline CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t> NAME(TYPE value)         \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t>(value);                \
-  }                                                                                            \
-  template <class T, class Tag, class Base>                                                    \
-  CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                                 \
-                                  CGAL::Named_function_parameters<T, Tag, Base> >              \
-  NAME(TYPE value, const CGAL::Named_function_parameters<T, Tag, Base>& np)                    \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                        \
-                                           CGAL::Named_function_parameters<T, Tag, Base> >(    \
-      value, np);                                                                              \
-  }
-
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: a tetrahedron whose smallest dihedral angle (degrees) is under this is a sliver
-CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER(double, sliver_bound)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, sliver_bound)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: whether interior vertices of slivers are moved (default `true`)
-CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER(bool, perturb_interior_vertices)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, perturb_interior_vertices)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: whether CGAL's `exude_mesh_3()` runs after the perturbation (default `false`)
-CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER(bool, exude_slivers)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, exude_slivers)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: whether CGAL's `tetrahedral_isotropic_remeshing()` polishes the interior at the end (default `false`)
-CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER(bool, polish_interior)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, polish_interior)
+/// \ingroup PkgBubbleMesh3Ref
+/// `remove_slivers()`: whether slivers left are replaced by the star of a new interior vertex at the end
+/// (default: the value of `perturb_interior_vertices`)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, insert_interior_vertices)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: largest move of a vertex, as a fraction of its shortest incident edge
-CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER(double, perturbation_radius_factor)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, perturbation_radius_factor)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: random directions tried per vertex and pass, besides the directions away from its slivers
-CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER(unsigned int, number_of_perturbation_directions)
-
-#undef CGAL_BUBBLE_MESH_3_SLIVER_PARAMETER
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(unsigned int, number_of_perturbation_directions)
 
 } // namespace parameters
 } // namespace Bubble_mesh_3
