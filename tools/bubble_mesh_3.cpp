@@ -24,6 +24,7 @@
 #include <iomanip>
 #include <memory>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -62,6 +63,14 @@ const char* usage_text =
 "  --sliver-bound D           move bubbles of tetrahedra whose smallest dihedral angle\n"
 "                             is under D degrees (default 15); surfaces never move\n"
 "  --no-sliver-removal        keep the tetrahedralization as it is\n"
+"  --remesh-surfaces          re-mesh the input surfaces with bubbles before meshing the\n"
+"                             volume (for inputs with poor triangles: tiny angles, edge\n"
+"                             lengths spread over orders of magnitude); contact curves,\n"
+"                             corners and the region and surface labels are kept\n"
+"  --size S                   target edge length of the re-meshed surfaces (with\n"
+"                             --remesh-surfaces): in model units, or with a % sign, of\n"
+"                             the bounding-box diagonal (e.g. 2%); default: the median\n"
+"                             input edge length. Thin layers get finer (two edges across)\n"
 "  --summary-json FILE        also write the model summary as JSON to FILE\n"
 "  --merge-tolerance T        merge points closer than T times the bounding-box\n"
 "                             diagonal (default 0: merge exactly coincident points only)\n"
@@ -84,6 +93,9 @@ struct Options
   double merge_tolerance = 0.;
   bool sliver_removal = true;
   double sliver_bound = 15.;
+  bool remesh_surfaces = false;
+  double size = 0.;          // absolute target edge length (0: not given)
+  double relative_size = 0.; // fraction of the bounding-box diagonal (0: not given)
 };
 
 [[noreturn]] void usage_error(const std::string& msg)
@@ -124,12 +136,24 @@ Options parse_options(int argc, char** argv)
     else if(a == "--merge-tolerance") o.merge_tolerance = parse_double(a, value(a));
     else if(a == "--no-sliver-removal") o.sliver_removal = false;
     else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
+    else if(a == "--remesh-surfaces") o.remesh_surfaces = true;
+    else if(a == "--size")
+    {
+      std::string v = value(a);
+      const bool relative = !v.empty() && v.back() == '%';
+      if(relative) v.pop_back();
+      const double x = parse_double(a, v);
+      if(!(x > 0.) || !std::isfinite(x)) usage_error("--size must be a positive number, got '" + args[i] + "'");
+      (relative ? o.relative_size : o.size) = relative ? x / 100. : x;
+    }
     else if(!a.empty() && a[0] == '-' && a != "-") usage_error("unknown option '" + a + "'");
     else if(o.input.empty()) o.input = a;
     else usage_error("more than one input file ('" + o.input + "' and '" + a + "')");
   }
   if(o.input.empty()) usage_error("no input file given");
   if(o.merge_tolerance < 0) usage_error("--merge-tolerance must not be negative");
+  if((o.size > 0. || o.relative_size > 0.) && !o.remesh_surfaces)
+    usage_error("--size is the target of --remesh-surfaces: give both");
   if(o.threads < 0) usage_error("--threads must not be negative");
   if(!(o.sliver_bound > 0. && o.sliver_bound < 70.))
     usage_error("--sliver-bound must be in (0, 70) degrees (a regular tetrahedron has 70.53)");
@@ -202,12 +226,17 @@ int main(int argc, char** argv)
                 << std::defaultfloat << std::flush;
     };
     stage_timer.start();
-    BM::make_bubble_mesh_3(model, c3t3,
-                           BM::parameters::stage_callback(progress,
-                           BM::parameters::bubble_mesh_report(&report,
-                           BM::parameters::perturb_interior_vertices(opt.sliver_removal,
-                           BM::parameters::sliver_bound(opt.sliver_bound,
-                           CGAL::parameters::random_seed(opt.seed))))));
+    const auto np = BM::parameters::stage_callback(progress,
+                    BM::parameters::bubble_mesh_report(&report,
+                    BM::parameters::perturb_interior_vertices(opt.sliver_removal,
+                    BM::parameters::sliver_bound(opt.sliver_bound,
+                    BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
+                    CGAL::parameters::random_seed(opt.seed))))));
+    // the size is a named parameter only when given: its absence selects the default
+    if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, np));
+    else if(opt.relative_size > 0.)
+      BM::make_bubble_mesh_3(model, c3t3, BM::parameters::relative_edge_length(opt.relative_size, np));
+    else BM::make_bubble_mesh_3(model, c3t3, np);
     stage_timer.stop();
   }
   catch(const std::exception& e)
@@ -217,9 +246,12 @@ int main(int argc, char** argv)
   }
 
   const auto& tr = report.tetrahedralization;
+  const auto& rr = report.surface_remeshing;
+  // the triangles the tetrahedralization saw: the re-meshed ones if re-meshed
+  const std::size_t meshed_triangles = report.surfaces_remeshed ? rr.number_of_triangles : model.number_of_triangles();
   auto quality = BM::compute_c3t3_quality(c3t3,
                    BM::parameters::number_of_steiner_points(tr.number_of_steiner_points(),
-                   BM::parameters::number_of_input_triangles(model.number_of_triangles(),
+                   BM::parameters::number_of_input_triangles(meshed_triangles,
                    BM::parameters::number_of_input_triangles_kept_whole(tr.number_of_triangles_kept_whole))));
   for(auto& rq : quality.regions)
     if(rq.region >= 1 && std::size_t(rq.region) <= model.number_of_regions())
@@ -227,14 +259,24 @@ int main(int argc, char** argv)
 
   if(!opt.quiet)
   {
+    if(report.surfaces_remeshed)
+      std::cout << std::setprecision(4) << "surface remeshing: " << model.number_of_triangles() << " -> " << rr.number_of_triangles
+                << " triangles, min angle " << rr.input_min_angle << " -> " << rr.min_angle << " deg ("
+                << rr.number_of_small_angle_triangles << " triangles under " << rr.angle_bound << " deg, "
+                << rr.number_of_forced_small_angle_triangles << " of them forced by input corners), edges within "
+                << "[0.5, 1.5] of the target " << 100. * rr.input_share_of_edges_within_size
+                << " -> " << 100. * rr.share_of_edges_within_size << " %, largest region volume change "
+                << rr.max_relative_volume_error << ", curve distance " << rr.max_curve_distance
+                << " of the diagonal\n" << std::defaultfloat;
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << tr.number_of_vertices
               << " vertices (" << report.number_of_surface_bubbles << " surface points, "
               << tr.number_of_interior_points_inserted << " bubbles, " << tr.number_of_steiner_points()
               << " Steiner points)\n"
-              << "input triangles kept whole: " << tr.number_of_triangles_kept_whole << " of "
-              << model.number_of_triangles() << " (" << std::setprecision(4)
+              << (report.surfaces_remeshed ? "re-meshed" : "input") << " triangles kept whole: "
+              << tr.number_of_triangles_kept_whole << " of " << meshed_triangles << " (" << std::setprecision(4)
               << 100. * tr.share_of_triangles_kept_whole() << " %)\n" << std::defaultfloat
-              << "time: surface bubbles " << report.time_surface_bubbles << " s, placement "
+              << "time: " << (report.surfaces_remeshed ? "surface remeshing " + std::to_string(report.time_surface_remeshing) + " s, " : std::string())
+              << "surface bubbles " << report.time_surface_bubbles << " s, placement "
               << report.time_placement << " s, relaxation " << report.time_relaxation
               << " s, tetrahedralization " << report.time_tetrahedralization << " s, sliver removal "
               << report.time_sliver_removal << " s\n";

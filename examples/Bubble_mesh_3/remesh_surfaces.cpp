@@ -11,6 +11,7 @@
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 
 #include <cstdlib>
+#include <exception>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -41,8 +42,17 @@ int main(int argc, char** argv)
     return EXIT_SUCCESS;
   }
   Model input;
-  BM::IO::read_geological_model(in_file, input);
-  BM::validate_geological_model(input);
+  try
+  {
+    BM::IO::read_geological_model(in_file, input);
+    BM::validate_geological_model(input);
+  }
+  catch(const std::exception& e)
+  {
+    // the reader and the validation name the file and the element
+    std::cerr << "remesh_surfaces: " << e.what() << "\n";
+    return EXIT_FAILURE;
+  }
 
   Model output;
   BM::Surface_remeshing_report r;

@@ -70,18 +70,7 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Stage_callback, stage_callback)
 
 /// \ingroup PkgBubbleMesh3Ref
 /// `make_bubble_mesh_3()` re-meshes the model's surfaces with `remesh_surfaces()` first
-inline Named_function_parameters<bool, internal_np::remesh_input_surfaces_t> remesh_input_surfaces(bool b)
-{
-  return Named_function_parameters<bool, internal_np::remesh_input_surfaces_t>(b);
-}
-/// \cond SKIP_IN_MANUAL
-template <class T, class Tag, class Base>
-Named_function_parameters<bool, internal_np::remesh_input_surfaces_t, Named_function_parameters<T, Tag, Base> >
-remesh_input_surfaces(bool b, const Named_function_parameters<T, Tag, Base>& np)
-{
-  return {b, np};
-}
-/// \endcond
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, remesh_input_surfaces)
 
 } // namespace parameters
 

@@ -24,10 +24,83 @@ run --help
 check "--help exits 0" test "$rc" -eq 0
 check "--help shows usage" contains "$out" "Usage: bubble_mesh_3 INPUT"
 check "--help lists --check" contains "$out" "--check"
+check "--help lists --remesh-surfaces" contains "$out" "--remesh-surfaces"
+check "--help explains relative --size" contains "$out" "e.g. 2%"
 
 run
 check "no input exits 2" test "$rc" -eq 2
 check "no input says so" contains "$err" "no input file"
+
+# a needle-shaped body: --check says its triangles are poor and points to --remesh-surfaces
+cat > "$tmp/needle.obj" <<'OBJ'
+o Needle
+v 0 0 0
+v 1000 0 0
+v 0 1 0
+v 0 0 1
+f 1 3 2
+f 1 2 4
+f 2 3 4
+f 1 4 3
+OBJ
+run "$tmp/needle.obj" --check
+check "needle body --check exits 0" test "$rc" -eq 0
+check "poor input angles point to --remesh-surfaces" contains "$out" "try --remesh-surfaces"
+
+# surfaces re-meshed first: a unit cube whose bottom face has a needle along its diagonal
+# (a point 0.001 off it); the bundled model's volume mesh would take minutes re-meshed
+python3 - "$tmp/cube.obj" <<'PY'
+import sys
+v=[(x,y,z) for z in (0,1) for y in (0,1) for x in (0,1)]
+def vid(x,y,z): return v.index((x,y,z))+1
+f=[]
+def face(quad, n):  # quad of (x,y,z) corners around, n the outward normal
+    a,b,c,d=[vid(*p) for p in quad]
+    u=[quad[1][i]-quad[0][i] for i in range(3)]; w=[quad[2][i]-quad[0][i] for i in range(3)]
+    cr=[u[1]*w[2]-u[2]*w[1],u[2]*w[0]-u[0]*w[2],u[0]*w[1]-u[1]*w[0]]
+    if sum(cr[i]*n[i] for i in range(3))<0: a,b,c,d=d,c,b,a
+    f.extend([(a,b,c),(a,c,d)])
+face([(0,0,1),(1,0,1),(1,1,1),(0,1,1)],(0,0,1))
+face([(0,0,0),(1,0,0),(1,0,1),(0,0,1)],(0,-1,0))
+face([(0,1,0),(1,1,0),(1,1,1),(0,1,1)],(0,1,0))
+face([(0,0,0),(0,1,0),(0,1,1),(0,0,1)],(-1,0,0))
+face([(1,0,0),(1,1,0),(1,1,1),(1,0,1)],(1,0,0))
+v.append((0.5,0.499,0)); c=len(v)
+a,b,cc,d=vid(0,0,0),vid(1,0,0),vid(1,1,0),vid(0,1,0)
+f.append((a,d,cc))  # upper-left half, clockwise seen from above: normal -z
+f.extend([(a,c,b),(b,c,cc),(cc,c,a)])      # lower-right half as a fan around the point near the diagonal
+with open(sys.argv[1],'w') as o:
+    o.write('o Cube\n')
+    for p in v: o.write('v %g %g %g\n'%p)
+    for t in f: o.write('f %d %d %d\n'%t)
+PY
+run "$tmp/cube.obj" --remesh-surfaces --size 25% -o "$tmp/r.mesh" --quality-json "$tmp/qr.json" --threads 2
+check "--remesh-surfaces exits 0" test "$rc" -eq 0
+check "needle cube: input angles point to --remesh-surfaces" contains "$out" "try --remesh-surfaces"
+check "progress line for the surface remeshing" contains "$out" "surface remeshing..."
+check "summary gives the remeshing figures" contains "$out" "surface remeshing: 14 -> "
+check "summary counts re-meshed triangles kept whole" contains "$out" "re-meshed triangles kept whole"
+check "summary gives the remeshing time" contains "$out" "time: surface remeshing "
+check "re-meshed: no triangle under 25 degrees, volume kept, region named" python3 -c "
+import json,re
+q=json.load(open('$tmp/qr.json'))
+assert any(r.get('name') == 'Cube' for r in q['regions']), q['regions']
+assert abs(q['all']['volume'] - 1.) <= 1e-9, q['all']['volume']
+m=re.search(r'min angle ([0-9.e+-]+) -> ([0-9.e+-]+) deg \((\d+) triangles under 25 deg', open('$tmp/out').read())
+assert m, 'no remeshing line'
+assert float(m.group(1)) < 1. and float(m.group(2)) >= 25. and int(m.group(3)) == 0, m.group(0)
+"
+run "$tmp/cube.obj" --remesh-surfaces --size 25% -o "$tmp/r1.mesh" --threads 1 -q
+check "--remesh-surfaces: same mesh with 1 and 2 threads" cmp -s "$tmp/r1.mesh" "$tmp/r.mesh"
+
+run "$model" --size 2%
+check "--size without --remesh-surfaces exits 2" test "$rc" -eq 2
+check "--size without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
+run "$model" --remesh-surfaces --size 0
+check "--size 0 exits 2" test "$rc" -eq 2
+run "$model" --remesh-surfaces --size abc%
+check "--size abc% exits 2" test "$rc" -eq 2
+check "--size abc% named" contains "$err" "--size"
 
 run "$model" --no-such-option
 check "unknown option exits 2" test "$rc" -eq 2

@@ -281,18 +281,22 @@ private:
     }
   }
 
+  // plain doubles for the thickness and proximity rays: a size heuristic on needle triangles
+  typedef CGAL::Simple_cartesian<double> SK;
+  typedef typename SK::Point_3 SPoint;
+  typedef typename SK::Vector_3 SVector;
+  typedef typename SK::Segment_3 SSegment;
+  typedef typename SK::Triangle_3 STriangle;
+  typedef typename SK::Sphere_3 SSphere;
+  static SPoint sp(const Point_3& p)
+  {
+    return SPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+
   // Sample points of each patch, about half a patch size apart; thickness
   // rays are cast from them along the triangle normal, both ways.
   void add_thickness_sources(const Geological_model_3<GeomTraits>& model, const Model_features& features)
   {
-    typedef CGAL::Simple_cartesian<double> SK; // plain doubles: a size heuristic on needle triangles
-    typedef typename SK::Point_3 SPoint;
-    typedef typename SK::Vector_3 SVector;
-    typedef typename SK::Segment_3 SSegment;
-    typedef typename SK::Triangle_3 STriangle;
-    typedef typename SK::Sphere_3 SSphere;
-    auto sp = [](const Point_3& p) { return SPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
-    (void)sp;
     typedef typename std::vector<STriangle>::const_iterator Iterator;
     typedef CGAL::AABB_triangle_primitive<SK, Iterator> Primitive;
     typedef CGAL::AABB_traits<SK, Primitive> Traits;
@@ -476,14 +480,6 @@ private:
   // the curve: a fault tip close under a horizon needs small elements there.
   void add_curve_proximity_sources(const Geological_model_3<GeomTraits>& model, const Model_features& features)
   {
-    typedef CGAL::Simple_cartesian<double> SK; // plain doubles: a size heuristic on needle triangles
-    typedef typename SK::Point_3 SPoint;
-    typedef typename SK::Vector_3 SVector;
-    typedef typename SK::Segment_3 SSegment;
-    typedef typename SK::Triangle_3 STriangle;
-    typedef typename SK::Sphere_3 SSphere;
-    auto sp = [](const Point_3& p) { return SPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
-    (void)sp;
     typedef typename std::vector<STriangle>::const_iterator Triangle_iterator;
     typedef CGAL::AABB_triangle_primitive<SK, Triangle_iterator> Triangle_primitive;
     typedef CGAL::AABB_tree<CGAL::AABB_traits<SK, Triangle_primitive> > Triangle_tree;
