@@ -163,7 +163,9 @@ inline std::string cell(double v, int precision)
   if(std::isnan(v)) return "-";
   if(std::isinf(v)) return v > 0 ? "inf" : "-inf";
   std::ostringstream s;
-  s << std::fixed << std::setprecision(precision) << v;
+  // huge values (aspect ratios of nearly flat tets) in scientific notation, so that columns keep their width
+  if(std::abs(v) >= 1e6) s << std::scientific << std::setprecision(2) << v;
+  else s << std::fixed << std::setprecision(precision) << v;
   return s.str();
 }
 
