@@ -622,7 +622,10 @@ go to `displacement_tolerance` and the population is checked once more.
 boundary, or a surface inside it such as a fault that ends in the body), or
 ends nearer to one than half `surface_offset_ratio` of its radius, is put
 back: at the closest surface point (CGAL's AABB tree), moved inward by
-`surface_offset_ratio` of its radius. Bubble centres also stay outside the
+`surface_offset_ratio` of its radius after a crossing, or just to that
+nearest distance when it only came too close (a bubble pressed on a wall by
+its neighbours then rests against it instead of bouncing off it at every
+step, which would keep its relaxation from converging). Bubble centres also stay outside the
 diametral balls of the surface triangles (the ball through the corners
 centred in the triangle's plane) and surface edges, enlarged by
 `1 + diametral_ball_margin`: then every input triangle whose own corners do
@@ -733,8 +736,8 @@ the end.
     \cgalParamType{`double`} \cgalParamDefault{3}
   \cgalParamNEnd
   \cgalParamNBegin{surface_offset_ratio}
-    \cgalParamDescription{how far off the surface, over its radius, a bubble put back lands; half of it is the
-      nearest a bubble may come to a surface}
+    \cgalParamDescription{how far off the surface, over its radius, a bubble put back after crossing a surface
+      lands; half of it is the nearest a bubble may come to a surface}
     \cgalParamType{`double`} \cgalParamDefault{0.5}
   \cgalParamNEnd
   \cgalParamNBegin{neighbor_skin}

@@ -140,6 +140,16 @@ public:
     return tree_->do_intersect(Segment_3(Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2])));
   }
 
+  /// true when the segment `[a,b]` lies in the ball around `b` of squared
+  /// radius `d2b`, `b`'s squared distance to the surfaces: then it crosses
+  /// none. A move is shorter than the surface gap, so this spares most
+  /// segment queries; the margin keeps rounding in `d2b` harmless.
+  static bool surely_not_crossing(const double a[3], const double b[3], double d2b)
+  {
+    const double l2 = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+    return l2 * (1. + 1e-6) < d2b;
+  }
+
   /// the protected ball that holds `p` deepest, or `none`
   std::size_t deepest_ball(const double p[3]) const
   {
@@ -194,7 +204,8 @@ public:
   Checks the move of a bubble of radius `radius` from the valid position
   `from` to `p`. If `p` lies across a surface, or nearer to one than
   `gap(radius)`, it is put back: at the closest surface point, moved inward
-  (off the surface by `offset_ratio * radius`).
+  (off the surface by `offset_ratio * radius` after a crossing, by just over
+  `gap(radius)` otherwise).
   A position inside protected balls is pushed out of them along their radii.
   REJECTED when that fails: the caller then keeps `from`. When MOVED,
   `normal` is the unit normal of the last constraint met, towards the side
@@ -207,9 +218,15 @@ public:
     if(!tree_) return Confinement_result::UNCHANGED;
     double q[3] = {p[0], p[1], p[2]};
     const double d2 = CGAL::to_double(tree_->squared_distance(Point_3(q[0], q[1], q[2])));
-    if(d2 < gap(radius) * gap(radius) || crosses(from, q))
+    const bool crossing = !surely_not_crossing(from, q, d2) && crosses(from, q);
+    if(crossing || d2 < gap(radius) * gap(radius))
     {
-      if(!put_back(from, p, radius, q, normal)) return Confinement_result::REJECTED;
+      // A bubble that only came too close lands just outside the gap, not at the
+      // full offset: pressed on a wall by its neighbours it would otherwise be
+      // pushed in and thrown back out by a quarter of its radius at every step,
+      // and its relaxation would never meet the tolerance.
+      const double off = crossing ? settings_.offset_ratio * radius : gap(radius) * (1. + 1e-6);
+      if(!put_back(from, p, radius, off, q, normal)) return Confinement_result::REJECTED;
       bool pushed = false;
       if(!push_out_of_balls(from, q, pushed, normal)) return Confinement_result::REJECTED;
       if(pushed && crosses(from, q)) return Confinement_result::REJECTED;
@@ -421,6 +438,21 @@ private:
     // 2^21 cells per axis at most
     h = (std::max)(h, ext / 1.e6);
     if(!(h > 0.)) h = 1.;
+    // A ball is filed in every cell it reaches: a few balls much wider than the
+    // median (a wide spread of triangle sizes) would fill millions of cells and
+    // make the set-up cost more than the relaxation. Coarser cells until the
+    // lists hold a few dozen entries per ball; the queries stay exact.
+    for(int k = 0; k < 40; ++k)
+    {
+      double cells = 0.;
+      for(const Ball& b : balls_)
+      {
+        const double c = (2. * b.radius + h) / h + 1.;
+        cells += c * c * c;
+      }
+      if(cells <= 64. * double(balls_.size()) + 1024.) break;
+      h *= 1.25;
+    }
     ball_cell_size_ = h;
     largest_ball_radius_ = largest;
     for(int d = 0; d < 3; ++d) ball_origin_[d] = bbox_[d] - largest - h;
@@ -464,7 +496,8 @@ private:
     return CGAL::to_double(tree_->squared_distance(Point_3(p[0], p[1], p[2]))) < g * g;
   }
 
-  bool put_back(const double from[3], const double p[3], double radius, double q[3], double normal[3]) const
+  bool put_back(const double from[3], const double p[3], double radius, double off, double q[3],
+                double normal[3]) const
   {
     const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
     const std::size_t t = std::size_t(cp.second - triangles_.begin());
@@ -478,7 +511,6 @@ private:
                           (from[2] - c[2]) * normal_[t][2];
       s = side >= 0. ? 1. : -1.;
     }
-    const double off = settings_.offset_ratio * radius;
     for(int d = 0; d < 3; ++d)
     {
       normal[d] = s * normal_[t][d];
