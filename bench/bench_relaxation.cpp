@@ -1,0 +1,330 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+//
+// bench_relaxation (issue 5): throughput of relax_bubbles() in bubble-steps per
+// second with 1 and 2 threads on the layered model scaled up, and, per model,
+// the pipeline's relaxation (time, where it goes) and the distribution of the
+// overlap ratios it leaves. A benchmark, not a test.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
+#include <CGAL/Bubble_mesh_3/Surface_bubble_sizing_field.h>
+#include <CGAL/Bubble_mesh_3/control_bubble_population.h>
+#include <CGAL/Bubble_mesh_3/make_layered_model.h>
+#include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
+#include <CGAL/Bubble_mesh_3/place_surface_bubbles.h>
+#include <CGAL/Bubble_mesh_3/relax_bubbles.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "../test/Bubble_mesh_3/region_sides.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace BM = CGAL::Bubble_mesh_3;
+namespace params = CGAL::Bubble_mesh_3::parameters;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef BM::Geological_model_3<K> Model;
+typedef BM::Bubble<K> Bubble;
+
+namespace {
+
+const char* usage =
+  "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST]\n"
+  "       bench_relaxation alpha [MODEL ...] [--threads N]\n"
+  "\n"
+  "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
+  "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
+  "            bubbles, placement, one population pass (the crowded start thinned), then\n"
+  "            N relaxation steps (default 100; no population control, no early stop)\n"
+  "            from that same start with each thread count of LIST (default 1,2).\n"
+  "            Prints bubble-steps per second over steps W+1 to N (default W = 20: the\n"
+  "            first steps of a crowded start cost more confinement work; wall clock\n"
+  "            as the visitor sees it), over the whole call (set-up included), and\n"
+  "            the process CPU time of the call; the result must be the same for every\n"
+  "            thread count (checked).\n"
+  "alpha       for each MODEL (default: the bundled layered_model.obj and every .ml in\n"
+  "            ../shared/data/geomodels next to the checkout): surface bubbles, placement\n"
+  "            and relax_bubbles() with default parameters on N threads (default 1);\n"
+  "            relaxation wall and CPU time and where the wall time went (steps,\n"
+  "            population passes); bubbles outside their region by\n"
+  "            CGAL::Side_of_triangle_mesh; overlap-ratio quantiles, histogram and the\n"
+  "            share inside [10,14].\n";
+
+double cpu_seconds()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+std::string load_average()
+{
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+
+// wall time of the steps, and of what happens between rounds, as a visitor sees them
+struct Step_clock
+{
+  CGAL::Real_timer timer;
+  std::size_t warmup = 1;  // steps of a region before the timed window opens (at least 1)
+  double first = -1., last = 0., previous = 0.;
+  double step_seconds = 0., between_rounds = 0., before_first = 0.;
+  double timed_bubble_steps = 0.;  // over the steps after the warm-up
+  bool started = false;
+
+  Step_clock() { timer.start(); }
+  void operator()(const BM::Relaxation_progress& p)
+  {
+    const double now = timer.time();
+    if(!p.end_of_round)
+    {
+      if(!started) { before_first = now; started = true; }
+      else if(p.step == 1) between_rounds += now - previous;
+      else step_seconds += now - previous;
+      if(p.step == warmup && first < 0.) first = now;
+      if(p.step > warmup) timed_bubble_steps += double(p.population);
+      last = now;
+    }
+    previous = now;
+  }
+};
+
+struct Models
+{
+  std::vector<std::string> paths;
+};
+
+bool read_model(const std::string& path, Model& m)
+{
+  try
+  {
+    BM::IO::read_geological_model(path, m);
+    return true;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << path << ": " << e.what() << std::endl;
+    return false;
+  }
+}
+
+int throughput(double edge_length, std::size_t steps, std::size_t warmup, const std::vector<std::size_t>& thread_counts)
+{
+  Model m;
+  BM::Layered_model_parameters lp;
+  lp.edge_length = edge_length;
+  CGAL::Real_timer t;
+  t.start();
+  BM::make_layered_model(m, lp);
+  const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
+  const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
+  std::vector<Bubble> start = BM::place_initial_bubbles(m, surface, sizing);
+  const std::size_t placed = start.size();
+  BM::control_bubble_population(m, surface, start, sizing);
+  std::cout << "layered model, edge length " << edge_length << ": " << m.number_of_triangles() << " triangles, "
+            << surface.size() << " surface bubbles, " << placed << " placed, " << start.size()
+            << " interior bubbles after one population pass (" << t.time() << " s)" << std::endl;
+
+  std::vector<Bubble> first_result;
+  double one_thread = 0.;
+  for(std::size_t threads : thread_counts)
+  {
+    std::vector<Bubble> interior = start;
+    Step_clock clock;
+    clock.warmup = warmup;
+    const std::string load = load_average();
+    const double c0 = cpu_seconds();
+    const BM::Relaxation_report rep = BM::relax_bubbles(
+      m, surface, interior, sizing,
+      params::number_of_threads(
+        threads, params::number_of_population_rounds(
+                   0, params::number_of_relaxation_steps(
+                        steps, params::displacement_tolerance(0., params::visitor(std::ref(clock)))))));
+    const double cpu = cpu_seconds() - c0;
+    const double step_wall = clock.last - clock.first;
+    const double rate = clock.timed_bubble_steps / step_wall;
+    if(threads == thread_counts.front()) one_thread = rate;
+    std::cout << std::fixed << std::setprecision(3) << "  " << threads << " thread(s): " << rep.steps
+              << " region-steps, " << rep.bubble_steps << " bubble-steps; steps " << warmup + 1 << " to " << steps << ": "
+              << clock.timed_bubble_steps << " bubble-steps in " << step_wall << " s wall -> "
+              << std::setprecision(0) << rate << " bubble-steps/s (" << rate / double(threads) << " per thread)"
+              << std::setprecision(3) << "; whole call " << rep.seconds << " s wall, " << cpu << " s CPU -> "
+              << std::setprecision(0) << rep.bubble_steps / rep.seconds << " bubble-steps/s wall, "
+              << rep.bubble_steps / cpu << " per CPU second" << std::setprecision(2);
+    if(threads != thread_counts.front()) std::cout << "; speed-up " << rate / one_thread;
+    std::cout << "; load before: " << load << std::endl;
+    if(first_result.empty()) first_result = interior;
+    else
+    {
+      bool same = first_result.size() == interior.size();
+      for(std::size_t i = 0; same && i < interior.size(); ++i)
+        same = first_result[i].center == interior[i].center && first_result[i].radius == interior[i].radius;
+      std::cout << "    same result as with " << thread_counts.front() << " thread(s): " << (same ? "yes" : "NO")
+                << std::endl;
+      if(!same) return EXIT_FAILURE;
+    }
+  }
+  return EXIT_SUCCESS;
+}
+
+double quantile(const std::vector<double>& sorted, double q)
+{
+  if(sorted.empty()) return 0.;
+  return sorted[std::size_t(q * double(sorted.size() - 1) + 0.5)];
+}
+
+int alpha_table(const std::vector<std::string>& paths, std::size_t threads)
+{
+  std::ostringstream table;
+  table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
+           "95% | 99% | max | <10 | [10,14] | >14 |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+           "---|---|\n";
+  int status = EXIT_SUCCESS;
+  for(const std::string& path : paths)
+  {
+    Model m;
+    if(!read_model(path, m)) { status = EXIT_FAILURE; continue; }
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
+    const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
+    std::vector<Bubble> interior = BM::place_initial_bubbles(m, surface, sizing);
+    const std::size_t placed = interior.size();
+    Step_clock clock;
+    const std::string load = load_average();
+    const double c0 = cpu_seconds();
+    const BM::Relaxation_report rep = BM::relax_bubbles(m, surface, interior, sizing,
+                                                        params::number_of_threads(threads, params::visitor(std::ref(clock))));
+    const double cpu = cpu_seconds() - c0;
+    const Region_sides<K> sides(m);
+    std::size_t outside = 0;
+    for(const Bubble& b : interior)
+      if(!sides.inside(b)) ++outside;
+    std::vector<double> alpha = BM::overlap_ratios(m, surface, interior);
+    std::sort(alpha.begin(), alpha.end());
+    std::size_t rounds = 0, converged = 0;
+    for(const BM::Region_relaxation_report& r : rep.regions) { rounds += r.rounds; converged += r.converged; }
+    std::cout << name << ": " << m.number_of_regions() << " regions, " << m.number_of_triangles() << " triangles, "
+              << surface.size() << " surface bubbles, " << placed << " placed -> " << interior.size()
+              << " relaxed (" << rep.added << " added, " << rep.removed << " removed, " << rep.rejected
+              << " rejected)\n  relaxation " << rep.seconds << " s wall, " << cpu << " s CPU (" << threads
+              << " thread(s), load before " << load << "): " << rep.steps << " steps, " << rep.bubble_steps
+              << " bubble-steps, " << rounds << " population rounds over " << rep.regions.size() << " regions ("
+              << converged << " converged)\n  wall time: before the first step " << clock.before_first
+              << " s, steps " << clock.step_seconds << " s, between rounds (population passes, list rebuilds) "
+              << clock.between_rounds << " s (meaningful with 1 thread: regions run one after the other)\n"
+              << "  outside their region (Side_of_triangle_mesh): " << outside << "; overlap ratio <10: " << rep.below
+              << ", [10,14]: " << rep.inside << ", >14: " << rep.above << " -> " << std::setprecision(4)
+              << 100. * rep.share_inside_bounds() << " % inside\n  histogram (bin k: k <= alpha < k+1):";
+    for(std::size_t b = 0; b < rep.overlap_histogram.size(); ++b)
+      if(rep.overlap_histogram[b] > 0) std::cout << " " << b << ":" << rep.overlap_histogram[b];
+    std::cout << std::endl;
+    for(const BM::Region_relaxation_report& r : rep.regions)
+      std::cout << "    region " << r.region << ": " << r.input_population << " -> " << r.population << " bubbles ("
+                << r.surface_bubbles << " on its surfaces), " << r.steps << " steps, " << r.rounds << " rounds, "
+                << (r.converged ? "converged" : "not converged") << " (last move " << r.max_displacement << "), "
+                << (r.population_settled ? "settled" : r.stopped_cycling ? "cycle guard" : "round budget")
+                << ", <10/in/>14: " << r.below << "/" << r.inside << "/" << r.above << ", " << r.seconds << " s"
+                << std::endl;
+    table << std::fixed << std::setprecision(2) << "| " << name << " | " << interior.size() << " | " << outside
+          << " | " << rep.seconds << " | " << cpu << " | " << rep.steps << " | " << rounds;
+    for(double q : {0., 0.01, 0.05, 0.25, 0.5, 0.75, 0.95, 0.99, 1.}) table << " | " << quantile(alpha, q);
+    table << std::setprecision(1) << " | " << rep.below << " | " << rep.inside << " ("
+          << 100. * rep.share_inside_bounds() << " %) | " << rep.above << " |\n";
+    if(outside > 0) status = EXIT_FAILURE;
+  }
+  std::cout << "\n" << table.str();
+  return status;
+}
+
+std::vector<std::string> default_models(const char* argv0)
+{
+  // the checkout is two levels above the build's bench directory, or the current directory
+  std::vector<std::string> roots = {".", "..", "../.."};
+  std::string exe(argv0);
+  const std::size_t slash = exe.find_last_of('/');
+  if(slash != std::string::npos) roots.push_back(exe.substr(0, slash) + "/../..");
+  for(const std::string& root : roots)
+  {
+    const std::string obj = root + "/examples/Bubble_mesh_3/data/layered_model.obj";
+    if(!std::ifstream(obj)) continue;
+    std::vector<std::string> out = {obj};
+    for(const char* name : {"modelA1", "modelA2", "modelA5", "CloudSpin_fixed"})
+    {
+      const std::string ml = root + "/../shared/data/geomodels/" + name + ".ml";
+      if(std::ifstream(ml)) out.push_back(ml);
+    }
+    return out;
+  }
+  return {};
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 2 || (std::strcmp(argv[1], "throughput") != 0 && std::strcmp(argv[1], "alpha") != 0))
+  {
+    std::cerr << usage;
+    return 2;
+  }
+  const bool alpha = std::strcmp(argv[1], "alpha") == 0;
+  double edge_length = 12.;
+  std::size_t steps = 100, warmup = 20;
+  std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
+  std::vector<std::string> models;
+  for(int i = 2; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    const bool has_value = i + 1 < argc;
+    if(a == "--edge-length" && has_value) edge_length = std::atof(argv[++i]);
+    else if(a == "--steps" && has_value) steps = std::size_t(std::atol(argv[++i]));
+    else if(a == "--warmup" && has_value) warmup = std::size_t(std::atol(argv[++i]));
+    else if(a == "--threads" && has_value)
+    {
+      threads.clear();
+      std::stringstream list(argv[++i]);
+      std::string item;
+      while(std::getline(list, item, ',')) threads.push_back(std::size_t(std::atol(item.c_str())));
+    }
+    else if(a.size() > 1 && a[0] == '-')
+    {
+      std::cerr << usage;
+      return 2;
+    }
+    else models.push_back(a);
+  }
+  if(threads.empty() || !(edge_length > 0.) || warmup == 0 || warmup >= steps)
+  {
+    std::cerr << usage;
+    return 2;
+  }
+  std::cout << "command:";
+  for(int i = 0; i < argc; ++i) std::cout << " " << argv[i];
+  std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
+  if(!alpha) return throughput(edge_length, steps, warmup, threads);
+  if(models.empty()) models = default_models(argv[0]);
+  return alpha_table(models, threads.front());
+}
