@@ -115,7 +115,7 @@ def run(cmd, cwd, timeout, log_path, use_time=True):
             rc = proc.wait()
             timed_out = True
         wall = time.perf_counter() - start
-    res = {"status": "ok", "wall_s": wall, "peak_mib": None, "returncode": rc, "reason": ""}
+    res = {"status": "ok", "wall_s": wall, "cpu_s": None, "peak_mib": None, "returncode": rc, "reason": ""}
     signum = None
     if use_time and os.path.exists(time_file):
         with open(time_file) as f:
@@ -123,6 +123,11 @@ def run(cmd, cwd, timeout, log_path, use_time=True):
         m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
         if m:
             res["peak_mib"] = int(m.group(1)) / 1024.0
+        # CPU time (user + system): on a loaded machine it says more than the wall time
+        user = re.search(r"User time \(seconds\): ([0-9.]+)", text)
+        system = re.search(r"System time \(seconds\): ([0-9.]+)", text)
+        if user and system:
+            res["cpu_s"] = float(user.group(1)) + float(system.group(1))
         m = re.search(r"Command terminated by signal (\d+)", text)
         if m:
             signum = int(m.group(1))
@@ -134,7 +139,7 @@ def run(cmd, cwd, timeout, log_path, use_time=True):
     if timed_out:
         res["status"] = "timeout"
         res["reason"] = "timeout after %g s (killed)" % timeout
-        res["peak_mib"] = None  # the killed /usr/bin/time wrote nothing reliable
+        res["peak_mib"] = res["cpu_s"] = None  # the killed /usr/bin/time wrote nothing reliable
     elif signum is not None:
         try:
             name = signal.Signals(signum).name
@@ -187,6 +192,28 @@ def _own_time(kind, log_path):
     except OSError:
         return None
     return float(m.group(1)) if m else None
+
+
+def _bubble_stages(log_path):
+    """bubble_mesh_3's own summary: seconds per stage and the sliver removal's before -> after
+    (cells under its bound, smallest dihedral), or {}."""
+    try:
+        with open(log_path, errors="replace") as f:
+            text = f.read()
+    except OSError:
+        return {}
+    out = {}
+    m = re.search(r"^time: (.*)$", text, re.M)
+    if m:
+        for name, value in re.findall(r"([a-z ]+?) ([0-9.eE+-]+) s", m.group(1)):
+            out["time_" + name.strip().replace(" ", "_") + "_s"] = float(value)
+    m = re.search(r"sliver removal: tetrahedra with a dihedral angle under ([0-9.]+) degrees (\d+) -> (\d+), "
+                  r"smallest dihedral ([0-9.eE+-]+) -> ([0-9.eE+-]+)", text)
+    if m:
+        out.update({"sliver_bound": float(m.group(1)), "slivers_before": int(m.group(2)),
+                    "slivers_after": int(m.group(3)), "min_dihedral_before": float(m.group(4)),
+                    "min_dihedral_after": float(m.group(5))})
+    return out
 
 
 # ---------------------------------------------------------------------------
@@ -272,8 +299,8 @@ def run_model(model, args, tools, avail, out_dir, selected, deadline):
         if key not in selected:
             continue
         row = {"model": name, "mesher": label, "key": key, "status": "", "error": "", "tets": None,
-               "vertices": None, "time_s": None, "peak_mib": None, "min_dihedral": None,
-               "share_under_10": None, "mean_smallest_dihedral": None, "aspect_ratio_median": None,
+               "vertices": None, "time_s": None, "cpu_s": None, "peak_mib": None, "min_dihedral": None,
+               "share_under_10": None, "share_under_10_unexplained": None, "mean_smallest_dihedral": None, "aspect_ratio_median": None,
                "triangles": triangles, "kept_whole": None, "volume_rel_error": None, "mesh": None, "own_time_s": None,
                "command": ""}
         rows.append(row)
@@ -289,7 +316,7 @@ def run_model(model, args, tools, avail, out_dir, selected, deadline):
             row["error"] = "skipped: the time budget (--budget %g s) is used up" % args.budget
             print("   %-34s %s" % (label, row["error"]), flush=True)
             continue
-        run_timeout = min(args.timeout, remaining)
+        run_timeout = min(args.bubble_timeout if kind == "bubble" else args.timeout, remaining)
         wdir = os.path.join(mdir, key)
         if os.path.isdir(wdir):
             shutil.rmtree(wdir)
@@ -314,11 +341,15 @@ def run_model(model, args, tools, avail, out_dir, selected, deadline):
         row["status"] = res["status"]
         row["error"] = res["reason"]
         row["time_s"] = res["wall_s"]
+        row["cpu_s"] = res["cpu_s"]
         row["peak_mib"] = res["peak_mib"]
         row["own_time_s"] = _own_time(kind, os.path.join(wdir, "run.log"))
+        if kind == "bubble":
+            row["stages"] = _bubble_stages(os.path.join(wdir, "run.log"))
         if res["status"] == "ok" and not os.path.exists(out):
             row["status"], row["error"] = "error", "no output mesh %s" % out
-        print("   %-34s %-8s %7.2f s %s" % (label, row["status"], res["wall_s"], row["error"]), flush=True)
+        print("   %-34s %-8s %7.2f s (CPU %s s) %s" % (label, row["status"], res["wall_s"], fmt(res["cpu_s"], ".2f"),
+                                                    row["error"]), flush=True)
         if row["status"] != "ok":
             continue
         row["mesh"] = out
@@ -333,6 +364,8 @@ def run_model(model, args, tools, avail, out_dir, selected, deadline):
             row["vertices"] = rep.get("points", a.get("vertices"))
             row["min_dihedral"] = a["dihedral_angle"]["min"]
             row["share_under_10"] = a["smallest_dihedral_angle"]["share_under_10"]
+            row["share_under_10_unexplained"] = a["smallest_dihedral_angle"].get(
+                "share_under_10_not_at_small_surface_angle")
             row["mean_smallest_dihedral"] = a["smallest_dihedral_angle"]["mean"]
             row["aspect_ratio_median"] = a["aspect_ratio"]["median"]
             if region_volumes:
@@ -370,19 +403,21 @@ def fmt(v, spec):
 
 
 def markdown_table(rows):
-    head = ("| model | mesher | tets | vertices | time (s) | peak memory (MiB) | min dihedral | % under 10 deg "
-            "| mean smallest dihedral | AR median | input triangles kept whole | region volume error | error |")
-    lines = [head, "|" + "---|" * 13]
+    head = ("| model | mesher | tets | vertices | CPU (s) | wall (s) | peak memory (MiB) | min dihedral | % under 10 deg "
+            "| % under 10 deg, no surface angle under 10 | mean smallest dihedral | AR median "
+            "| input triangles kept whole | region volume error | error |")
+    lines = [head, "|" + "---|" * 15]
     for r in rows:
         kept = "-"
         if r["kept_whole"] is not None and r["triangles"]:
             kept = "%d / %d (%.1f %%)" % (r["kept_whole"], r["triangles"], 100.0 * r["kept_whole"] / r["triangles"])
         err = ("crash: " + r["error"]) if r["status"] == "crash" else r["error"]
         err = err.replace("|", "\\|")
-        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            r["model"], r["mesher"], fmt(r["tets"], "d"), fmt(r["vertices"], "d"), fmt(r["time_s"], ".2f"),
-            fmt(r["peak_mib"], ".0f"), fmt(r["min_dihedral"], ".3g"),
-            fmt(None if r["share_under_10"] is None else 100.0 * r["share_under_10"], ".1f"),
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["model"], r["mesher"], fmt(r["tets"], "d"), fmt(r["vertices"], "d"), fmt(r.get("cpu_s"), ".2f"),
+            fmt(r["time_s"], ".2f"), fmt(r["peak_mib"], ".0f"), fmt(r["min_dihedral"], ".3g"),
+            fmt(None if r["share_under_10"] is None else 100.0 * r["share_under_10"], ".2f"),
+            fmt(None if r.get("share_under_10_unexplained") is None else 100.0 * r["share_under_10_unexplained"], ".2f"),
             fmt(r["mean_smallest_dihedral"], ".2f"), fmt(r["aspect_ratio_median"], ".2f"), kept,
             fmt(r["volume_rel_error"], ".1e"), err))
     return "\n".join(lines) + "\n"
@@ -420,6 +455,8 @@ def main():
                    help="CMake build folder with the programs (default: %(default)s)")
     p.add_argument("--out", default=None, help="output folder (default: BUILD_DIR/compare_peers)")
     p.add_argument("--timeout", type=float, default=120.0, help="time limit per run in seconds (default: %(default)s)")
+    p.add_argument("--bubble-timeout", type=float, default=None,
+                   help="time limit per bubble_mesh_3 run in seconds (default: --timeout)")
     p.add_argument("--budget", type=float, default=840.0,
                    help="time budget of the whole run in seconds: a run gets at most what is left, and runs "
                         "are skipped (and say so) once it is used up (default: %(default)s)")
@@ -428,6 +465,8 @@ def main():
     p.add_argument("--bubble-args", default="", help="extra arguments for bubble_mesh_3 (quoted, e.g. '--threads 2')")
     args = p.parse_args()
     args.bubble_args = shlex.split(args.bubble_args)
+    if args.bubble_timeout is None:
+        args.bubble_timeout = args.timeout
 
     selected = [s.strip() for s in args.meshers.split(",") if s.strip()]
     bad = [s for s in selected if s not in MESHER_KEYS]
@@ -457,14 +496,16 @@ def main():
         if svg:
             svgs[model_name(m)] = svg
     total = time.perf_counter() - start
+    load_end = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
 
     info = {"command": command, "machine": os.uname().nodename, "cpus": os.cpu_count(),
-            "load_average_at_start": load, "timeout_s": args.timeout, "budget_s": args.budget, "total_s": total,
+            "load_average_at_start": load, "load_average_at_end": load_end, "timeout_s": args.timeout, "budget_s": args.budget, "total_s": total,
             "tetgen": shutil.which("tetgen"), "rows": rows, "histograms": svgs}
     with open(os.path.join(out_dir, "compare_peers.json"), "w") as f:
         json.dump(info, f, indent=1)
-    md = ["# compare_peers\n", "Command: `%s` (total %.0f s, %s CPUs, load average %.1f at start, "
-          "time limit %g s per run, budget %g s)\n" % (command, total, os.cpu_count(), load or 0.0, args.timeout, args.budget), "",
+    md = ["# compare_peers\n", "Command: `%s` (total %.0f s, %s CPUs, load average %.1f at start and %.1f at the end, "
+          "time limit %g s per run, budget %g s)\n" % (command, total, os.cpu_count(), load or 0.0, load_end or 0.0,
+                                                     args.timeout, args.budget), "",
           markdown_table(rows), ""]
     for n, s in svgs.items():
         md.append("Histograms of %s: %s\n" % (n, s))
