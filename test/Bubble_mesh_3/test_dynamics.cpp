@@ -17,6 +17,8 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "region_sides.h"
+
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
@@ -298,24 +300,7 @@ static void test_layered_model()
   std::cout << "default layered model: " << m.number_of_regions() << " regions, " << surface.size()
             << " surface bubbles, " << start.size() << " initial interior bubbles" << std::endl;
 
-  typedef CGAL::Surface_mesh<Point_3> Mesh;
-  std::vector<std::unique_ptr<Mesh> > meshes(m.number_of_regions() + 1);
-  std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K> > > side(m.number_of_regions() + 1);
-  for(std::size_t r = 1; r <= m.number_of_regions(); ++r)
-  {
-    std::vector<std::array<std::size_t, 3> > faces;
-    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
-    {
-      const auto& patch = m.patch(m.patch_of_triangle(t));
-      if(patch.is_inside_region() || (patch.positive_region != r && patch.negative_region != r)) continue;
-      std::array<std::size_t, 3> f = m.triangle(t);
-      if(patch.positive_region == r) std::swap(f[1], f[2]); // outward
-      faces.push_back(f);
-    }
-    meshes[r].reset(new Mesh);
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(m.points(), faces, *meshes[r]);
-    side[r].reset(new CGAL::Side_of_triangle_mesh<Mesh, K>(*meshes[r]));
-  }
+  const Region_sides<K> sides(m);
 
   std::vector<Bubble> results[2];
   for(std::size_t threads : {std::size_t(1), std::size_t(2)})
@@ -326,7 +311,7 @@ static void test_layered_model()
       BM::relax_bubbles(m, surface, interior, sizing, params::number_of_threads(threads));
     std::size_t outside = 0, settled = 0, cycling = 0;
     for(const Bubble& b : interior)
-      if((*side[b.region])(b.center) != CGAL::ON_BOUNDED_SIDE) ++outside;
+      if(!sides.inside(b)) ++outside;
     for(const BM::Region_relaxation_report& r : rep.regions)
     {
       settled += r.population_settled;
