@@ -268,10 +268,12 @@ int main(int argc, char** argv)
                 << " -> " << 100. * rr.share_of_edges_within_size << " %, largest region volume change "
                 << rr.max_relative_volume_error << ", curve distance " << rr.max_curve_distance
                 << " of the diagonal\n" << std::defaultfloat;
-    std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << tr.number_of_vertices
+    // sliver removal may add interior vertices: count them too, so that the total is the mesh's
+    std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices
               << " vertices (" << report.number_of_surface_bubbles << " surface points, "
               << tr.number_of_interior_points_inserted << " bubbles, " << tr.number_of_steiner_points()
-              << " Steiner points)\n"
+              << " Steiner points, " << report.sliver_removal.number_of_vertices_inserted
+              << " added by sliver removal)\n"
               << (report.surfaces_remeshed ? "re-meshed" : "input") << " triangles kept whole: "
               << tr.number_of_triangles_kept_whole << " of " << meshed_triangles << " (" << std::setprecision(4)
               << 100. * tr.share_of_triangles_kept_whole() << " %)\n" << std::defaultfloat

@@ -13,6 +13,7 @@
 #include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
+#include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remove_slivers.h>
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
@@ -118,6 +119,7 @@ stages is accepted here too.
 \cgalNamedParamsEnd
 
 \throws Geological_model_error or Tetrahedralization_error, naming the element at fault
+(also when the re-meshed surfaces are not a valid model)
 */
 template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& input_model,
@@ -142,6 +144,13 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     timer.start();
     report->surface_remeshing = remesh_surfaces(input_model, remeshed, np);
     timer.stop();
+    // the later stages assume a valid model: a re-meshing that broke it is an error, not a wrong mesh
+    try { validate_geological_model(remeshed); }
+    catch(const Geological_model_error& e)
+    {
+      throw Geological_model_error(std::string("the re-meshed surfaces (remesh_surfaces()) are not a valid model; "
+                                               "mesh without re-meshing or with another size: ") + e.what());
+    }
     report->time_surface_remeshing = timer.time();
     timer.reset();
   }
