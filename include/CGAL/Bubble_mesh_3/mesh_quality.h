@@ -8,6 +8,7 @@
 
 #include <CGAL/Bubble_mesh_3/Quality_report.h>
 
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
@@ -143,34 +144,18 @@ enum facet_input_min_angle_t { facet_input_min_angle };
 
 namespace parameters {
 
-#define CGAL_BUBBLE_MESH_3_QUALITY_PARAMETER(NAME, TYPE)                                          \
-  template <class T_>                                                                            \
-  Named_function_parameters<TYPE, internal_np::NAME##_t> NAME(const T_& v)                       \
-  {                                                                                              \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t>(TYPE(v));                      \
-  }                                                                                              \
-  template <class T_, class T, class Tag, class Base>                                             \
-  Named_function_parameters<TYPE, internal_np::NAME##_t, Named_function_parameters<T, Tag, Base> > \
-  NAME(const T_& v, const Named_function_parameters<T, Tag, Base>& np)                           \
-  {                                                                                              \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t,                                \
-                                     Named_function_parameters<T, Tag, Base> >(TYPE(v), np);     \
-  }
-
 /// \ingroup PkgBubbleMesh3Ref
 /// `compute_mesh_quality()`: how many of the worst tetrahedra to list (default 20)
-CGAL_BUBBLE_MESH_3_QUALITY_PARAMETER(number_of_worst_tetrahedra, std::size_t)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_worst_tetrahedra)
 /// \ingroup PkgBubbleMesh3Ref
 /// `compute_mesh_quality()`: Steiner points the mesher inserted, copied into the report
-CGAL_BUBBLE_MESH_3_QUALITY_PARAMETER(number_of_steiner_points, std::size_t)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_steiner_points)
 /// \ingroup PkgBubbleMesh3Ref
 /// `compute_mesh_quality()`: input surface triangles, copied into the report
-CGAL_BUBBLE_MESH_3_QUALITY_PARAMETER(number_of_input_triangles, std::size_t)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_input_triangles)
 /// \ingroup PkgBubbleMesh3Ref
 /// `compute_mesh_quality()`: input triangles that are one mesh facet (not split), copied into the report
-CGAL_BUBBLE_MESH_3_QUALITY_PARAMETER(number_of_input_triangles_kept_whole, std::size_t)
-
-#undef CGAL_BUBBLE_MESH_3_QUALITY_PARAMETER
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_input_triangles_kept_whole)
 
 /// \ingroup PkgBubbleMesh3Ref
 /// `to_labeled_tetrahedral_mesh()`: a callable `double(const C3T3::Facet&)` giving the

@@ -15,6 +15,7 @@
 // parameter pack to every stage, and k-means, surface remeshing and sliver
 // removal already read `number_of_iterations` as their own budgets.
 
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
@@ -50,63 +51,44 @@ namespace parameters {
 using CGAL::parameters::default_values;
 using CGAL::parameters::visitor;
 
-// One-argument form starts a chain, two-argument form appends to one.
-#define CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(TYPE, NAME, TAG)                                 \
-  inline CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t>                           \
-  NAME(const TYPE& value)                                                                      \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t>(value);                 \
-  }                                                                                            \
-  template <class T, class Tag, class Base>                                                    \
-  CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t,                                  \
-                                  CGAL::Named_function_parameters<T, Tag, Base> >              \
-  NAME(const TYPE& value, const CGAL::Named_function_parameters<T, Tag, Base>& np)             \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::TAG##_t,                         \
-                                           CGAL::Named_function_parameters<T, Tag, Base> >(    \
-      value, np);                                                                              \
-  }
-
 /// mass m of a free bubble (default 1)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, mass, mass)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, mass)
 /// viscous damping c (default 2 sqrt(m k): critical for one bubble bound by one spring)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, damping, damping)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, damping)
 /// stiffness k of the default force law (default 1)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, stiffness, stiffness)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, stiffness)
 /// integration time step (default 0.2 sqrt(m/k))
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, time_step, time_step)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, time_step)
 /// step budget of one relaxation (one per population round; default 2000)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(std::size_t, number_of_relaxation_steps, number_of_relaxation_steps)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_relaxation_steps)
 /// convergence: largest displacement in one step over the local radius (default 1e-3)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, displacement_tolerance, displacement_tolerance)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, displacement_tolerance)
 /// convergence of the relaxations between population passes, looser since more passes follow (default 1e-2)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, round_displacement_tolerance, round_displacement_tolerance)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, round_displacement_tolerance)
 /// lower bound of the overlap ratio of interior bubbles (default 10)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, min_overlap_ratio, min_overlap_ratio)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, min_overlap_ratio)
 /// upper bound of the overlap ratio of interior bubbles (default 14)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_overlap_ratio, max_overlap_ratio)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, max_overlap_ratio)
 /// most population-control rounds, each followed by a relaxation (default 12; 0 = none)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(std::size_t, number_of_population_rounds, number_of_population_rounds)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_population_rounds)
 /// the population has settled when a round changes at most this share of it, or one bubble (default 0.002)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, population_tolerance, population_tolerance)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, population_tolerance)
 /// least normalised distance l/(r_new + r_j) of an inserted bubble to the others (default 0.7)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, insertion_clearance, insertion_clearance)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, insertion_clearance)
 /// extra reach of the neighbour lists, over r_i + r_j (default 0.15)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, neighbor_skin, neighbor_skin)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, neighbor_skin)
 /// longest move of a bubble in one step, over its radius (default 0.125, at most 0.9 skin)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_step_ratio, max_step_ratio)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, max_step_ratio)
 /// a bubble's radius is read again from the sizing field after it moved this share of it (default 0.1)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, radius_update_ratio, radius_update_ratio)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, radius_update_ratio)
 /// bubble centres stay farther than (1 + margin) times a diametral ball's radius from its centre (default 0.02)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, diametral_ball_margin, diametral_ball_margin)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, diametral_ball_margin)
 /// diametral balls wider than this times the local surface-bubble radius are not protected (default 3)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, max_protected_ball_ratio, max_protected_ball_ratio)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, max_protected_ball_ratio)
 /// a bubble put back inside its region lands this share of its radius off the surface (default 0.5)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(double, surface_offset_ratio, surface_offset_ratio)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_offset_ratio)
 /// number of threads of the dynamics (default 0: all cores)
-CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER(std::size_t, number_of_threads, dynamics_threads)
-
-#undef CGAL_BUBBLE_MESH_3_DYNAMICS_PARAMETER
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER_WITH_TAG(std::size_t, number_of_threads, dynamics_threads)
 
 /// the pair force law, a model of `BubbleForceLaw` (default `Cubic_bubble_force(stiffness)`)
 template <class ForceLaw>

@@ -87,7 +87,6 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, parallel_regions)
 /// where `place_initial_bubbles()` writes one `Region_placement_statistics` per region (default none)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<Region_placement_statistics>*, placement_statistics)
 
-
 /// the `KMeansClustering` model used by `place_initial_bubbles()` (default `K_means_clustering`)
 template <class Clustering>
 CGAL::Named_function_parameters<Clustering, internal_np::clustering_model_t>

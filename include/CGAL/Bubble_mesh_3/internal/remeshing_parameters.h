@@ -14,6 +14,7 @@
 // CGAL tags reused: `number_of_iterations` (bubble relaxation steps per round),
 // `verbose` (progress on std::cerr).
 
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
@@ -59,80 +60,60 @@ using CGAL::parameters::default_values;
 using CGAL::parameters::number_of_iterations;
 using CGAL::parameters::verbose;
 
-// One function pair per tag: the one-argument form starts a chain, the
-// two-argument form appends to an existing chain (CGAL's or ours).
-#define CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(TYPE, NAME)                                     \
-  inline CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t>                          \
-  NAME(TYPE value)                                                                             \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t>(value);                \
-  }                                                                                            \
-  template <class T, class Tag, class Base>                                                    \
-  CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                                 \
-                                  CGAL::Named_function_parameters<T, Tag, Base> >              \
-  NAME(TYPE value, const CGAL::Named_function_parameters<T, Tag, Base>& np)                    \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<TYPE, internal_np::NAME##_t,                        \
-                                           CGAL::Named_function_parameters<T, Tag, Base> >(    \
-      value, np);                                                                              \
-  }
-
 /// \ingroup PkgBubbleMesh3Ref
 /// angle in degrees above which a turn of a contact curve makes a corner and
 /// the dihedral between two adjacent triangles of one patch makes a feature
 /// curve (default 30)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, feature_angle)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, feature_angle)
 /// \ingroup PkgBubbleMesh3Ref
 /// target edge length of the re-meshed surfaces, in model units (default:
 /// the median input edge length); overrides `relative_edge_length`
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, edge_length)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, edge_length)
 /// \ingroup PkgBubbleMesh3Ref
 /// target edge length as a fraction of the bounding-box diagonal
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, relative_edge_length)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, relative_edge_length)
 /// \ingroup PkgBubbleMesh3Ref
 /// size factor per region (index 0 = outside, ignored); a patch takes the
 /// smaller factor of its two regions (default: all 1)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(std::vector<double>, region_size_factors)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<double>, region_size_factors)
 /// \ingroup PkgBubbleMesh3Ref
 /// size factor per patch, multiplied with the region factor (default: all 1)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(std::vector<double>, patch_size_factors)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<double>, patch_size_factors)
 /// \ingroup PkgBubbleMesh3Ref
 /// number of edges wanted across the local thickness (distance to the
 /// nearest non-adjacent surface), e.g. across a thin layer (default 2)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, elements_across_thickness)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, elements_across_thickness)
 /// \ingroup PkgBubbleMesh3Ref
 /// floor of the thickness rule, in model units (default: a tenth of the
 /// smallest patch size)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, minimum_edge_length)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, minimum_edge_length)
 /// \ingroup PkgBubbleMesh3Ref
 /// largest ratio between the sizes of neighbouring edges (default 1.5): the
 /// size grows by at most `size_grading - 1` per unit of distance
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, size_grading)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, size_grading)
 /// \ingroup PkgBubbleMesh3Ref
 /// largest distance between a re-meshed contact curve and the input
 /// polyline, as a fraction of the bounding-box diagonal (default 5e-7)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, curve_distance)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, curve_distance)
 /// \ingroup PkgBubbleMesh3Ref
 /// distance between a new triangle and the input surface, as a fraction of
 /// the local target edge length, above which the triangle is refined (down
 /// to a quarter of the local size; default 1e-3)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, surface_distance)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_distance)
 /// \ingroup PkgBubbleMesh3Ref
 /// largest angle in degrees between the normals of a patch and the plane it
 /// is flattened onto for triangulation; patches that bend more are cut into
 /// several charts (default 50)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, chart_angle)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, chart_angle)
 /// \ingroup PkgBubbleMesh3Ref
 /// smallest triangle angle in degrees the re-meshing aims at (default 25)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(double, minimum_triangle_angle)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, minimum_triangle_angle)
 /// \ingroup PkgBubbleMesh3Ref
 /// the patch triangulation method (default `Surface_remeshing_method::BUBBLES`)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(Surface_remeshing_method, surface_remeshing_method)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Surface_remeshing_method, surface_remeshing_method)
 /// \ingroup PkgBubbleMesh3Ref
 /// rounds of bubble relaxation and population control on each patch (default 3)
-CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER(std::size_t, number_of_population_steps)
-
-#undef CGAL_BUBBLE_MESH_3_REMESHING_PARAMETER
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_population_steps)
 
 /// \ingroup PkgBubbleMesh3Ref
 /// receives the sizing field `remesh_surfaces()` used in the end, with the

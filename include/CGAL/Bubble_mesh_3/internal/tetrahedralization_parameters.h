@@ -9,6 +9,7 @@
 // Named parameters of `tetrahedralize_bubbles()`. CGAL's own tags that it
 // reads as well: `CGAL::parameters::verbose`.
 
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
@@ -25,35 +26,18 @@ enum minimum_split_length_t { minimum_split_length };
 
 namespace parameters {
 
-// One free function per tag, plus the two-argument form that appends the tag
-// to an existing chain (see CGAL_STYLE.md, "Own named parameters").
-#define CGAL_BUBBLE_MESH_3_TETRAHEDRALIZATION_PARAMETER(TYPE, NAME)                               \
-  inline Named_function_parameters<TYPE, internal_np::NAME##_t>                                   \
-  NAME(TYPE value)                                                                                \
-  {                                                                                               \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t>(value);                         \
-  }                                                                                               \
-  template <class T, class Tag, class Base>                                                       \
-  Named_function_parameters<TYPE, internal_np::NAME##_t, Named_function_parameters<T, Tag, Base>> \
-  NAME(TYPE value, const Named_function_parameters<T, Tag, Base>& np)                             \
-  {                                                                                               \
-    return {value, np};                                                                           \
-  }
-
 /// whether interior points inside the diametral ball of an input edge, or the
 /// equatorial ball of a well-shaped input triangle, that holds no other model
 /// point, are dropped before recovery (default `true`)
-CGAL_BUBBLE_MESH_3_TETRAHEDRALIZATION_PARAMETER(bool, drop_encroaching_points)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, drop_encroaching_points)
 /// a triangle's equatorial ball drops points only when its radius is at most
 /// this times the triangle's shortest edge (default `1`: smallest angle >= 30 degrees)
-CGAL_BUBBLE_MESH_3_TETRAHEDRALIZATION_PARAMETER(double, drop_ball_ratio_bound)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, drop_ball_ratio_bound)
 /// recovery stops with an error beyond this many Steiner points (default: see `tetrahedralize_bubbles()`)
-CGAL_BUBBLE_MESH_3_TETRAHEDRALIZATION_PARAMETER(std::size_t, maximum_number_of_steiner_points)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, maximum_number_of_steiner_points)
 /// recovery stops with an error rather than split an input edge into pieces
 /// shorter than this fraction of the bounding-box diagonal (default `1e-9`)
-CGAL_BUBBLE_MESH_3_TETRAHEDRALIZATION_PARAMETER(double, minimum_split_length)
-
-#undef CGAL_BUBBLE_MESH_3_TETRAHEDRALIZATION_PARAMETER
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, minimum_split_length)
 
 } // namespace parameters
 } // namespace Bubble_mesh_3
