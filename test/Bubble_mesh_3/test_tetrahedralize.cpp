@@ -19,6 +19,7 @@
 #include <CGAL/Bubble_mesh_3/extract_region_mesh.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
+#include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 
 #if __has_include(<CGAL/Bubble_mesh_3/make_layered_model.h>)
 #include <CGAL/Bubble_mesh_3/make_layered_model.h>
@@ -34,6 +35,8 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/IO/File_medit.h>
 #include <CGAL/Random.h>
+
+#include "tilted_grid_box.h"
 
 #include <array>
 #include <cassert>
@@ -513,6 +516,21 @@ void test_fault_at_small_angle()
   mesh_and_check("fault meeting a horizon at 5 degrees", m, jittered_lattice(BM::bbox(m), 0.1, 5), c3t3);
 }
 
+// The tilted grid box (tilted_grid_box.h): its diagonals all need Steiner
+// points, and its outer top is a tilted plane of the convex hull. Recovery
+// used to split the top triangles forever there: rounded Steiner points a
+// hair above the hull's plane lifted flat cells across several triangles.
+void test_tilted_grid_box()
+{
+  const Model m = make_tilted_grid_box<Model>(6, 4, {0., 1.5, 2.25, 3.75});
+  BM::validate_geological_model(m); // throws if the model is not valid
+  C3T3 bare;
+  const Report none = mesh_and_check("tilted grid box, diagonals against the perturbation", m, std::vector<Point_3>(), bare);
+  assert(none.number_of_steiner_points() > 0); // the diagonals were not Delaunay edges
+  C3T3 filled;
+  mesh_and_check("tilted grid box with interior points", m, jittered_lattice(BM::bbox(m), 0.3, 6), filled);
+}
+
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
 void test_layered_model()
 {
@@ -614,6 +632,7 @@ int main(int argc, char** argv)
   test_thin_layer();
   test_pinch_out();
   test_fault_at_small_angle();
+  test_tilted_grid_box();
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
   test_layered_model();
 #else

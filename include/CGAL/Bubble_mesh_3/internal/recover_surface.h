@@ -57,6 +57,7 @@
 #include <cstdint>
 #include <deque>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -765,6 +766,58 @@ private:
     id_by_stamp_[ts] = id;
   }
 
+  /*
+  A Steiner point is rounded, so on the model's outer boundary it may land a
+  hair outside the model. On a planar part of the convex hull such a point
+  lifts a tent of flat cells over the plane whose facets span several input
+  triangles, on the outside as well as the inside, and no refinement removes
+  it (each split adds such points). So a point that lies outside a plane group
+  the model's outside bounds on one side is moved by ulps into the model: a
+  few ulps at most, far below the tolerance of points on their element.
+  */
+  Point_3 rounded_into_model(const Point_3& p, Vertex_kind kind, std::size_t element) const
+  {
+    std::vector<std::size_t> outer; // triangles of outer plane groups the point lies on
+    auto consider = [&](std::size_t t) {
+      const int o = group_outside_[plane_group_[t]];
+      if(o == 1 || o == -1) outer.push_back(t);
+    };
+    if(kind == Vertex_kind::triangle_point) consider(element);
+    else
+      for(std::size_t k = edge_triangles_start_[element]; k < edge_triangles_start_[element + 1]; ++k)
+        consider(edge_triangles_[k]);
+    if(outer.empty()) return p;
+    std::array<double, 3> inward = {{0., 0., 0.}};
+    for(std::size_t t : outer)
+    {
+      const std::size_t g = plane_group_[t];
+      const Vector_3& n = group_normal_[g];
+      const double l = std::sqrt(CGAL::to_double(n.squared_length()));
+      for(int i = 0; i < 3; ++i) inward[i] -= group_outside_[g] * CGAL::to_double(n[i]) / l;
+    }
+    std::array<double, 3> c = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    auto is_outside = [&](const Point_3& q) {
+      for(std::size_t t : outer)
+      {
+        const std::size_t g = plane_group_[t];
+        const auto& tri = model_.triangle(t);
+        const int sigma = triangle_normal(t) * group_normal_[g] > 0 ? 1 : -1;
+        const int side =
+          int(CGAL::orientation(model_.point(tri[0]), model_.point(tri[1]), model_.point(tri[2]), q)) * sigma;
+        if(side == group_outside_[g]) return true;
+      }
+      return false;
+    };
+    // each step moves every coordinate by one ulp along the inward direction,
+    // which brings the point strictly closer to the inside of every plane
+    for(int step = 0; step < 64 && is_outside(Point_3(c[0], c[1], c[2])); ++step)
+      for(int i = 0; i < 3; ++i)
+        if(inward[i] != 0.)
+          c[i] = std::nextafter(c[i], inward[i] > 0. ? std::numeric_limits<double>::infinity()
+                                                     : -std::numeric_limits<double>::infinity());
+    return Point_3(c[0], c[1], c[2]);
+  }
+
   std::size_t insert_steiner_point(const Point_3& p, Vertex_kind kind, std::size_t element, double t,
                                    Cell_handle hint, const std::string& context)
   {
@@ -773,7 +826,7 @@ private:
                                      std::to_string(options_.maximum_number_of_steiner_points) +
                                      " Steiner points (maximum_number_of_steiner_points), while recovering " +
                                      context);
-    const Weighted_point wp(p);
+    const Weighted_point wp(rounded_into_model(p, kind, element));
     typename Tr::Locate_type lt;
     int li, lj;
     const Cell_handle c = tr_.locate(wp, lt, li, lj, hint);
@@ -994,6 +1047,8 @@ private:
     std::vector<std::size_t> pts;
     std::vector<Point_3> pts3;
     std::vector<Cell_handle> conflict;
+    const int maximum_fold_splits = 64;
+    int fold_splits = 0;
     for(;;)
     {
       triangle_dirty_[t] = 0;
@@ -1074,7 +1129,13 @@ private:
       }
       if(worst == typename CDT::Face_handle())
       {
-        // the sub-facets are there but fold over each other: split its longest subsegment
+        // the sub-facets are there but fold over each other: split its longest
+        // subsegment. Rounding can make that endless (each split brings new
+        // flat cells); a bound turns it into an error that names the triangle.
+        if(++fold_splits > maximum_fold_splits)
+          throw Tetrahedralization_error("cannot recover " + context + ": its sub-facets still fold over each other in "
+                                         "flat cells after " + std::to_string(maximum_fold_splits) +
+                                         " splits of its boundary (numerical limit)");
         std::size_t longest = 0;
         double longest_l2 = -1.;
         for(std::size_t i = 0; i < nb; ++i)
