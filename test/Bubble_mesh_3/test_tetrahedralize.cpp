@@ -516,19 +516,33 @@ void test_fault_at_small_angle()
   mesh_and_check("fault meeting a horizon at 5 degrees", m, jittered_lattice(BM::bbox(m), 0.1, 5), c3t3);
 }
 
-// The tilted grid box (tilted_grid_box.h): its diagonals all need Steiner
-// points, and its outer top is a tilted plane of the convex hull. Recovery
-// used to split the top triangles forever there: rounded Steiner points a
-// hair above the hull's plane lifted flat cells across several triangles.
+// The tilted grid box (tilted_grid_box.h): its diagonals all go against
+// CGAL's perturbation, and its outer top is a tilted plane of the convex hull.
+// Without tie-breaking weights recovery split the top triangles forever there:
+// rounded Steiner points a hair above the hull's plane lifted flat cells
+// across several triangles. Interior points kept next to the surfaces bring
+// Steiner points on that plane all the same.
 void test_tilted_grid_box()
 {
   const Model m = make_tilted_grid_box<Model>(6, 4, {0., 1.5, 2.25, 3.75});
   BM::validate_geological_model(m); // throws if the model is not valid
   C3T3 bare;
   const Report none = mesh_and_check("tilted grid box, diagonals against the perturbation", m, std::vector<Point_3>(), bare);
-  assert(none.number_of_steiner_points() > 0); // the diagonals were not Delaunay edges
+  // the tie-breaking weights (internal/cocircular_weights.h) give every
+  // cocircular quad the input's diagonal: no Steiner point at all
+  assert(none.number_of_steiner_points() == 0 && none.share_of_triangles_kept_whole() == 1.);
+  // diagonals both ways: the weights come from projections, not the quadratic alone
+  const Model mixed = make_tilted_grid_box<Model>(6, 4, {0., 1.5, 2.25, 3.75}, true);
+  C3T3 bare_mixed;
+  const Report r_mixed = mesh_and_check("tilted grid box, diagonals both ways", mixed, std::vector<Point_3>(), bare_mixed);
+  assert(r_mixed.number_of_steiner_points() == 0 && r_mixed.share_of_triangles_kept_whole() == 1.);
   C3T3 filled;
   mesh_and_check("tilted grid box with interior points", m, jittered_lattice(BM::bbox(m), 0.3, 6), filled);
+  C3T3 crowded;
+  const Report r_crowded = BM::tetrahedralize_bubbles(m, jittered_lattice(BM::bbox(m), 0.3, 6), crowded,
+                                                      BM::parameters::drop_encroaching_points(false));
+  check_mesh("tilted grid box, interior points kept next to the surfaces", m, crowded, r_crowded);
+  assert(r_crowded.number_of_steiner_points() > 0);
 }
 
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
@@ -571,7 +585,8 @@ void test_errors()
   }
   assert(thrown);
 
-  // a Steiner budget of zero on a model that needs Steiner points names a triangle or edge
+  // a Steiner budget of zero on a model that needs Steiner points (interior
+  // points kept next to its surfaces) names a triangle or edge
   Model pinch;
   make_layered_box(pinch, Grid{4}, {[](double, double) { return 0.4; }, [](double x, double) { return 0.4 + 0.1 * x; }},
                    {2, 1, 2});
@@ -579,7 +594,7 @@ void test_errors()
   try
   {
     BM::tetrahedralize_bubbles(pinch, jittered_lattice(BM::bbox(pinch), 0.1, 6), c3t3,
-                               BM::parameters::maximum_number_of_steiner_points(0));
+                               BM::parameters::maximum_number_of_steiner_points(0, BM::parameters::drop_encroaching_points(false)));
   }
   catch(const BM::Tetrahedralization_error& e)
   {

@@ -176,13 +176,26 @@ public:
     Perturbation_statistics stats;
     if(tr_.dimension() != 3) return stats;
     for(auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
-      if(CGAL::to_double(v->point().weight()) != 0.)
+    {
+      const double w = CGAL::to_double(v->point().weight());
+      if(w == 0.) continue;
+      // with weights a re-insertion could hide a neighbour, which the cell
+      // bases of Mesh_3 cannot give back; the surface recovery's tie-breaking
+      // weights are non-negative and far below the squared edge lengths, so
+      // they hide nothing (evaluate() still refuses a hidden point)
+      double shortest2 = std::numeric_limits<double>::infinity();
+      std::vector<Vertex_handle> adjacent;
+      tr_.finite_adjacent_vertices(v, std::back_inserter(adjacent));
+      for(Vertex_handle a : adjacent)
+        shortest2 = (std::min)(shortest2, CGAL::to_double(CGAL::squared_distance(
+                                            tr_.geom_traits().construct_point_3_object()(v->point()),
+                                            tr_.geom_traits().construct_point_3_object()(a->point()))));
+      if(w < 0. || !(w <= std::ldexp(shortest2, -30)))
       {
-        // with weights a re-insertion could hide a neighbour, which the
-        // cell bases of Mesh_3 cannot give back
         stats.skipped_nonzero_weights = true;
         return stats;
       }
+    }
 
     CGAL::Real_timer timer;
     timer.start();
@@ -318,6 +331,8 @@ private:
     const Cell_handle c = tr_.locate(wp, lt, li, lj, hint);
     if(lt == Tr::VERTEX || lt == Tr::OUTSIDE_CONVEX_HULL || lt == Tr::OUTSIDE_AFFINE_HULL || tr_.is_infinite(c))
       return;
+    // a point the weights of its neighbours would hide
+    if(tr_.side_of_power_sphere(c, wp, true) != CGAL::ON_BOUNDED_SIDE) return;
     std::vector<Facet> boundary, internal;
     cand.conflict_cells.clear();
     tr_.find_conflicts(wp, c, std::back_inserter(boundary), std::back_inserter(cand.conflict_cells),

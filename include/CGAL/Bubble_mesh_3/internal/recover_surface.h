@@ -37,6 +37,7 @@
 // recovered is named in a Tetrahedralization_error.
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/cocircular_weights.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
@@ -167,11 +168,13 @@ public:
     const std::vector<Point_3>& cpts = pts;
     CGAL::spatial_sort(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(cpts)));
 
+    // tiny weights that give ties of cocircular input quads to the input's diagonals
+    const std::vector<double> weights = cocircular_tie_weights(model_);
     Cell_handle hint;
     for(std::size_t i : order)
     {
       const std::size_t nv = tr_.number_of_vertices();
-      Vertex_handle v = tr_.insert(Weighted_point(pts[i]), hint);
+      Vertex_handle v = tr_.insert(Weighted_point(pts[i], i < n_model ? weights[i] : 0.), hint);
       if(v == Vertex_handle() || tr_.number_of_vertices() != nv + 1)
         throw Tetrahedralization_error(describe_point_kind(i) + " at " + to_string(pts[i]) +
                                        " coincides with another point");
@@ -787,16 +790,22 @@ private:
       for(std::size_t k = edge_triangles_start_[element]; k < edge_triangles_start_[element + 1]; ++k)
         consider(edge_triangles_[k]);
     if(outer.empty()) return p;
-    std::array<double, 3> inward = {{0., 0., 0.}};
+    std::array<double, 3> c = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    // a coordinate an axis plane of the point holds exactly stays as it is
+    std::array<bool, 3> fixed = {{false, false, false}};
     for(std::size_t t : outer)
     {
-      const std::size_t g = plane_group_[t];
-      const Vector_3& n = group_normal_[g];
-      const double l = std::sqrt(CGAL::to_double(n.squared_length()));
-      for(int i = 0; i < 3; ++i) inward[i] -= group_outside_[g] * CGAL::to_double(n[i]) / l;
+      const Vector_3& n = group_normal_[plane_group_[t]];
+      for(int i = 0; i < 3; ++i)
+        if(n[(i + 1) % 3] == 0 && n[(i + 2) % 3] == 0) fixed[i] = true;
     }
-    std::array<double, 3> c = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-    auto is_outside = [&](const Point_3& q) {
+    // each step moves the free coordinates by one ulp along the inward
+    // normals of the planes the point is outside of, which brings it
+    // strictly closer to their inside
+    for(int step = 0; step < 64; ++step)
+    {
+      const Point_3 q(c[0], c[1], c[2]);
+      std::array<double, 3> inward = {{0., 0., 0.}};
       for(std::size_t t : outer)
       {
         const std::size_t g = plane_group_[t];
@@ -804,17 +813,21 @@ private:
         const int sigma = triangle_normal(t) * group_normal_[g] > 0 ? 1 : -1;
         const int side =
           int(CGAL::orientation(model_.point(tri[0]), model_.point(tri[1]), model_.point(tri[2]), q)) * sigma;
-        if(side == group_outside_[g]) return true;
+        if(side != group_outside_[g]) continue;
+        const Vector_3& n = group_normal_[g];
+        const double l = std::sqrt(CGAL::to_double(n.squared_length()));
+        for(int i = 0; i < 3; ++i) inward[i] -= group_outside_[g] * CGAL::to_double(n[i]) / l;
       }
-      return false;
-    };
-    // each step moves every coordinate by one ulp along the inward direction,
-    // which brings the point strictly closer to the inside of every plane
-    for(int step = 0; step < 64 && is_outside(Point_3(c[0], c[1], c[2])); ++step)
+      bool moved = false;
       for(int i = 0; i < 3; ++i)
-        if(inward[i] != 0.)
+        if(inward[i] != 0. && !fixed[i])
+        {
           c[i] = std::nextafter(c[i], inward[i] > 0. ? std::numeric_limits<double>::infinity()
                                                      : -std::numeric_limits<double>::infinity());
+          moved = true;
+        }
+      if(!moved) break;
+    }
     return Point_3(c[0], c[1], c[2]);
   }
 
@@ -1154,7 +1167,15 @@ private:
 
       const Point_2 c2 = CGAL::circumcenter(worst->vertex(0)->point(), worst->vertex(1)->point(),
                                             worst->vertex(2)->point());
-      const Point_3 c3 = A + CGAL::to_double(c2.x()) * e1 + CGAL::to_double(c2.y()) * e2;
+      Point_3 c3 = A + CGAL::to_double(c2.x()) * e1 + CGAL::to_double(c2.y()) * e2;
+      // on a triangle of an axis plane (the walls of most models) the point
+      // is put exactly on the plane: rounded off it, points make flat cells
+      {
+        std::array<double, 3> xyz = {{CGAL::to_double(c3.x()), CGAL::to_double(c3.y()), CGAL::to_double(c3.z())}};
+        for(int i = 0; i < 3; ++i)
+          if(A[i] == B[i] && A[i] == C[i]) xyz[i] = CGAL::to_double(A[i]);
+        c3 = Point_3(xyz[0], xyz[1], xyz[2]);
+      }
       const std::array<double, 3> lambda = barycentric(c2);
       const bool inside = lambda[0] > 0. && lambda[1] > 0. && lambda[2] > 0.;
 
