@@ -302,7 +302,7 @@ private:
   static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
   typedef std::pair<std::uint32_t, std::uint32_t> Cell_range;
 
-  // what a cell of the sparse grid lists: ranges of `ball_list_` and `face_index_`
+  // what a cell of the sparse grid lists: ranges of `ball_index_` and `face_index_`
   struct Cell
   {
     Cell_range balls = Cell_range(0, 0);
@@ -437,11 +437,13 @@ private:
     double largest = 0.;
     std::vector<double> rs;
     for(const Ball& b : balls_) { rs.push_back(b.radius); largest = (std::max)(largest, b.radius); }
-    double h = typical_radius_ > 0. ? 2. * typical_radius_ : 1.;
+    // cells of the median ball radius: a ball is listed in a few dozen cells and a cell
+    // lists a dozen balls; with cells twice as wide a query would scan about five times as many
+    double h = typical_radius_ > 0. ? typical_radius_ : 1.;
     if(!rs.empty())
     {
       std::nth_element(rs.begin(), rs.begin() + rs.size() / 2, rs.end());
-      h = 2. * rs[rs.size() / 2];
+      h = rs[rs.size() / 2];
     }
     const double ext = (std::max)({bbox_[3] - bbox_[0], bbox_[4] - bbox_[1], bbox_[5] - bbox_[2], 0.});
     // 2^21 cells per axis at most
@@ -459,7 +461,7 @@ private:
         const double c = (2. * b.radius + h) / h + 1.;
         cells += c * c * c;
       }
-      if(cells <= 64. * double(balls_.size()) + 1024.) break;
+      if(cells <= 128. * double(balls_.size()) + 1024.) break;
       h *= 1.25;
     }
     ball_cell_size_ = h;
@@ -476,23 +478,57 @@ private:
         lo[d] = coordinate(b.c[d] - b.radius - pad, d);
         hi[d] = coordinate(b.c[d] + b.radius + pad, d);
       }
+      // only the cells that come within the pad of the ball (the corners of its box do not)
+      const double reach = (b.radius + pad) * (1. + 1e-9) + 1e-9 * h;
       for(std::int64_t k = lo[2]; k <= hi[2]; ++k)
         for(std::int64_t j = lo[1]; j <= hi[1]; ++j)
           for(std::int64_t l = lo[0]; l <= hi[0]; ++l)
-            entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+          {
+            const std::int64_t cc[3] = {l, j, k};
+            double d2 = 0.;
+            for(int d = 0; d < 3; ++d)
+            {
+              const double c0 = ball_origin_[d] + double(cc[d]) * h, c1 = c0 + h;
+              const double o = (std::max)({c0 - b.c[d], 0., b.c[d] - c1});
+              d2 += o * o;
+            }
+            if(d2 <= reach * reach) entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+          }
     }
     std::sort(entries.begin(), entries.end());
-    // copies in cell order: a scan reads one block of memory
-    ball_list_.resize(entries.size());
+    std::unordered_map<std::uint64_t, Cell> cells;
+    ball_index_.resize(entries.size());
     for(std::size_t e = 0; e < entries.size(); ++e)
     {
-      ball_list_[e] = balls_[entries[e].second];
-      Cell_range& range = cells_[entries[e].first].balls;
+      ball_index_[e] = entries[e].second;
+      Cell_range& range = cells[entries[e].first].balls;
       if(e == 0 || entries[e].first != entries[e - 1].first) range = Cell_range(std::uint32_t(e), std::uint32_t(e));
       ++range.second;
     }
-    build_face_lists(pad);
+    // the triangles' pad is a whole cell: distances are exact as far as with the coarser cells
+    build_face_lists(h, cells);
+    // an open-addressing table: a look-up is a multiplication and a probe or two
+    std::size_t bits = 4;
+    while((std::size_t(1) << bits) < 2 * cells.size()) ++bits;
+    slot_shift_ = 64 - int(bits);
+    slot_key_.assign(std::size_t(1) << bits, empty_key);
+    slot_cell_.assign(std::size_t(1) << bits, Cell());
+    // (filled in key order, so that the table does not depend on the map's iteration order)
+    std::vector<std::uint64_t> keys;
+    keys.reserve(cells.size());
+    for(const auto& kc : cells) keys.push_back(kc.first);
+    std::sort(keys.begin(), keys.end());
+    for(std::uint64_t k : keys)
+    {
+      std::size_t s = slot_of(k);
+      while(slot_key_[s] != empty_key) s = (s + 1) & (slot_key_.size() - 1);
+      slot_key_[s] = k;
+      slot_cell_[s] = cells[k];
+    }
   }
+
+  static constexpr std::uint64_t empty_key = ~std::uint64_t(0); // never a key: coordinates have 21 bits
+  std::size_t slot_of(std::uint64_t k) const { return std::size_t((k * 0x9E3779B97F4A7C15ull) >> slot_shift_); }
 
   /*
   The triangles in the same sparse grid: each is listed in the cells that
@@ -502,7 +538,7 @@ private:
   the surfaces scan a few triangles instead of walking the tree. A triangle
   that would fill too many cells is scanned by every query instead.
   */
-  void build_face_lists(double pad)
+  void build_face_lists(double pad, std::unordered_map<std::uint64_t, Cell>& cells)
   {
     const double h = ball_cell_size_;
     face_pad_ = pad;
@@ -566,7 +602,7 @@ private:
     for(std::size_t e = 0; e < entries.size(); ++e)
     {
       face_index_[e] = entries[e].second;
-      Cell_range& range = cells_[entries[e].first].faces;
+      Cell_range& range = cells[entries[e].first].faces;
       if(e == 0 || entries[e].first != entries[e - 1].first) range = Cell_range(std::uint32_t(e), std::uint32_t(e));
       ++range.second;
     }
@@ -574,8 +610,13 @@ private:
 
   const Cell* cell_at(const double p[3]) const
   {
-    const auto it = cells_.find(key(coordinate(p[0], 0), coordinate(p[1], 1), coordinate(p[2], 2)));
-    return it == cells_.end() ? nullptr : &it->second;
+    if(slot_key_.empty()) return nullptr;
+    const std::uint64_t k = key(coordinate(p[0], 0), coordinate(p[1], 1), coordinate(p[2], 2));
+    for(std::size_t s = slot_of(k);; s = (s + 1) & (slot_key_.size() - 1))
+    {
+      if(slot_key_[s] == k) return &slot_cell_[s];
+      if(slot_key_[s] == empty_key) return nullptr;
+    }
   }
 
   Cell_range balls_near(const double p[3]) const
@@ -604,7 +645,7 @@ private:
     double best_depth = 0.;
     for(std::uint32_t k = cell->balls.first; k < cell->balls.second; ++k)
     {
-      const Ball& b = ball_list_[k];
+      const Ball& b = balls_[ball_index_[k]];
       const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
       const double d2 = dx * dx + dy * dy + dz * dz;
       if(d2 < b.radius2)
@@ -628,7 +669,7 @@ private:
     if(cell)
       for(std::uint32_t k = cell->balls.first; k < cell->balls.second; ++k)
       {
-        const Ball& b = ball_list_[k];
+        const Ball& b = balls_[ball_index_[k]];
         const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
         const double l2 = dx * dx + dy * dy + dz * dz, reach = c + b.radius;
         // a root only for the balls that come nearer than c
@@ -811,7 +852,7 @@ private:
     const Cell_range range = balls_near(q);
     for(std::uint32_t k = range.first; k < range.second; ++k)
     {
-      const Ball& ball = ball_list_[k];
+      const Ball& ball = balls_[ball_index_[k]];
       const double f[3] = {from[0] - ball.c[0], from[1] - ball.c[1], from[2] - ball.c[2]};
       const double c = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - ball.radius2;
       if(c <= 0.) continue; // `from` on or in this ball: only rounding, it was checked
@@ -896,8 +937,10 @@ private:
   double ball_cell_size_ = 1.;
   double largest_ball_radius_ = 0.;
   double ball_origin_[3] = {0., 0., 0.};
-  std::vector<Ball> ball_list_; // the cells' ball lists (copies)
-  std::unordered_map<std::uint64_t, Cell> cells_;
+  std::vector<std::uint32_t> ball_index_; // the cells' ball lists
+  std::vector<std::uint64_t> slot_key_;   // the cells that list something, by hash
+  std::vector<Cell> slot_cell_;
+  int slot_shift_ = 60;
   std::vector<Face> faces_;                // one per triangle
   std::vector<std::uint32_t> face_index_;  // the cells' triangle lists
   std::vector<std::uint32_t> wide_faces_;  // triangles too wide to list: scanned by every query
