@@ -643,9 +643,11 @@ its speed that it could use. Balls wider than `max_protected_ball_ratio`
 times the local surface-bubble radius (needle and cap triangles) are not
 protected, since emptying them would leave holes larger than the mesh size.
 A start position that cannot be made valid drops the bubble; a move that
-cannot is undone. The checks cost AABB-tree queries, so each bubble carries a
-clearance (a ball free of surfaces and protected balls around its last
-checked position) and moves inside it skip them.
+cannot is undone. Each bubble carries a clearance (a ball free of surfaces
+and protected balls around its last checked position) and moves inside it
+skip the checks; the others read the few triangles and balls a sparse grid
+lists near the bubble, and only bubbles far from every surface query CGAL's
+AABB tree.
 
 <b>Population control.</b> Before the first relaxation, and after each one,
 a pass of `control_bubble_population()` deletes interior bubbles with an

@@ -62,7 +62,12 @@ mesh size; the surface recovery splits such triangles instead.
 
 The checks are the expensive part of a step, so a bubble carries a clearance:
 the radius of a ball around a checked position that meets no surface and no
-protected ball. Moves that stay inside it need no check. All queries are
+protected ball. Moves that stay inside it need no check. The others are
+answered from a sparse grid that lists, per cell, the balls and triangles
+near it (a bubble resting against a surface is checked at every step, and
+a walk down the AABB tree for each check made the relaxation of models with
+many such bubbles take hours); the tree serves the positions far from the
+surfaces and the inside test of start positions. All queries are
 `const` and may run from several threads once the object is built.
 */
 template <class GeomTraits>
@@ -555,22 +560,20 @@ private:
         f.lo[d] = (std::min)({f.p[0][d], f.p[1][d], f.p[2][d]});
         f.hi[d] = (std::max)({f.p[0][d], f.p[1][d], f.p[2][d]});
       }
-      f.flat = normal_[i][0] == 0. && normal_[i][1] == 0. && normal_[i][2] == 0.;
-      if(!f.flat)
+      double l2 = 0.;
+      for(int e = 0; e < 3; ++e)
       {
-        // a sliver of a triangle: its plane and corner regions are ill-conditioned, use its edges
-        double l2 = 0.;
-        for(int e = 0; e < 3; ++e)
-        {
-          double s = 0.;
-          for(int d = 0; d < 3; ++d) s += (f.p[(e + 1) % 3][d] - f.p[e][d]) * (f.p[(e + 1) % 3][d] - f.p[e][d]);
-          l2 = (std::max)(l2, s);
-        }
-        const double ab[3] = {f.p[1][0] - f.p[0][0], f.p[1][1] - f.p[0][1], f.p[1][2] - f.p[0][2]};
-        const double ac[3] = {f.p[2][0] - f.p[0][0], f.p[2][1] - f.p[0][1], f.p[2][2] - f.p[0][2]};
-        const double n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
-        f.flat = !(dot(n, n) > 1e-20 * l2 * l2);
+        double s = 0.;
+        for(int d = 0; d < 3; ++d) s += (f.p[(e + 1) % 3][d] - f.p[e][d]) * (f.p[(e + 1) % 3][d] - f.p[e][d]);
+        l2 = (std::max)(l2, s);
       }
+      const double ab[3] = {f.p[1][0] - f.p[0][0], f.p[1][1] - f.p[0][1], f.p[1][2] - f.p[0][2]};
+      const double ac[3] = {f.p[2][0] - f.p[0][0], f.p[2][1] - f.p[0][1], f.p[2][2] - f.p[0][2]};
+      const double cr[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+      const double n2 = dot(cr, cr);
+      // a sliver of a triangle: its plane and corner regions are ill-conditioned, use its edges
+      f.flat = !(n2 > 1e-20 * l2 * l2) ||
+               (normal_[i][0] == 0. && normal_[i][1] == 0. && normal_[i][2] == 0.);
       std::int64_t lo[3], hi[3];
       double cells = 1.;
       for(int d = 0; d < 3; ++d)
@@ -581,7 +584,10 @@ private:
       }
       if(cells > 4096.) { wide_faces_.push_back(std::uint32_t(i)); continue; }
       const double* n = normal_[i].data();
-      const bool planar = !f.flat;
+      // cells far from the plane are left out only when the unit normal is accurate: its
+      // error, about 1e-16 l^2 / |ab x ac|, stays under 1e-10 here, and the margin below covers it
+      const bool planar = n2 > 1e-12 * l2 * l2;
+      const double margin = 1e-8 * (std::sqrt(l2) + reach + h);
       for(std::int64_t k = lo[2]; k <= hi[2]; ++k)
         for(std::int64_t j = lo[1]; j <= hi[1]; ++j)
           for(std::int64_t l = lo[0]; l <= hi[0]; ++l)
@@ -591,8 +597,7 @@ private:
               const double c[3] = {ball_origin_[0] + (double(l) + 0.5) * h, ball_origin_[1] + (double(j) + 0.5) * h,
                                    ball_origin_[2] + (double(k) + 0.5) * h};
               const double off = (c[0] - f.p[0][0]) * n[0] + (c[1] - f.p[0][1]) * n[1] + (c[2] - f.p[0][2]) * n[2];
-              // (the margin covers the rounding of the centre and of the unit normal)
-              if(std::abs(off) > reach * (1. + 1e-9) + 1e-9 * h) continue;
+              if(std::abs(off) > reach + margin) continue;
             }
             entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
           }
