@@ -341,14 +341,17 @@ private:
     ++rebuilds_;
     const std::size_t n = s_.n_free;
     const double reach = law_.cutoff() + st_.skin;
-    s_.fill_grid(grid_, reach);
+    grid_.build(s_.x.data(), s_.y.data(), s_.z.data(), s_.r.data(), s_.size(), s_.box, reach, true);
     rx_.assign(s_.x.begin(), s_.x.begin() + n);
     ry_.assign(s_.y.begin(), s_.y.begin() + n);
     rz_.assign(s_.z.begin(), s_.z.begin() + n);
     rr_.assign(s_.r.begin(), s_.r.begin() + n);
     const std::size_t block = 1024, nb = (n + block - 1) / block;
-    std::vector<std::vector<std::uint32_t> > lists(nb);
-    std::vector<std::size_t> counts(n, 0);
+    // per block of bubbles, reused from one rebuild to the next (no allocation once warm)
+    std::vector<std::vector<std::uint32_t> >& lists = lists_;
+    if(lists.size() < nb) lists.resize(nb);
+    std::vector<std::size_t>& counts = counts_;
+    counts.assign(n, 0);
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
       for(std::size_t bk = b0; bk < b1; ++bk)
       {
@@ -358,10 +361,10 @@ private:
         {
           const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
           const std::size_t before = out.size();
-          grid_.for_each_near(xi, yi, zi, reach * ri, reach, [&](std::size_t j) {
+          grid_.for_each_near_packed(xi, yi, zi, reach * ri, reach, [&](std::size_t j, const double* q) {
             if(j == i) return;
-            const double dx = s_.x[j] - xi, dy = s_.y[j] - yi, dz = s_.z[j] - zi;
-            const double lim = reach * (ri + s_.r[j]);
+            const double dx = q[0] - xi, dy = q[1] - yi, dz = q[2] - zi;
+            const double lim = reach * (ri + q[3]);
             if(dx * dx + dy * dy + dz * dz < lim * lim) out.push_back(std::uint32_t(j));
           });
           counts[i] = out.size() - before;
@@ -373,7 +376,7 @@ private:
     nbr_.resize(offset_[n]);
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
       for(std::size_t bk = b0; bk < b1; ++bk)
-        if(!lists[bk].empty())
+        if(!lists[bk].empty() && bk * block < n)
           std::copy(lists[bk].begin(), lists[bk].end(), nbr_.begin() + offset_[bk * block]);
     });
     scale_masses();
@@ -428,6 +431,8 @@ private:
   std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> nbr_;
+  std::vector<std::vector<std::uint32_t> > lists_;       // rebuild_lists()'s work space
+  std::vector<std::size_t> counts_;
   std::size_t rebuilds_ = 0;
   bool follow_sizing_ = true;
 };
@@ -638,9 +643,11 @@ its speed that it could use. Balls wider than `max_protected_ball_ratio`
 times the local surface-bubble radius (needle and cap triangles) are not
 protected, since emptying them would leave holes larger than the mesh size.
 A start position that cannot be made valid drops the bubble; a move that
-cannot is undone. The checks cost AABB-tree queries, so each bubble carries a
-clearance (a ball free of surfaces and protected balls around its last
-checked position) and moves inside it skip them.
+cannot is undone. Each bubble carries a clearance (a ball free of surfaces
+and protected balls around its last checked position) and moves inside it
+skip the checks; the others read the few triangles and balls a sparse grid
+lists near the bubble, and only bubbles far from every surface query CGAL's
+AABB tree.
 
 <b>Population control.</b> Before the first relaxation, and after each one,
 a pass of `control_bubble_population()` deletes interior bubbles with an

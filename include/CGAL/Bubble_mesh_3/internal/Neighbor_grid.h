@@ -89,8 +89,10 @@ public:
   }
 
   /// files points `0..n-1` (coordinates in three arrays), under the names
-  /// `ids[k]` if given (else k); forgets inserted points
-  void build(const double* x, const double* y, const double* z, std::size_t n, const Index* ids = nullptr)
+  /// `ids[k]` if given (else k); forgets inserted points. With `r`, keeps a copy
+  /// of each point and its `r` in cell order for `for_each_near_packed()`.
+  void build(const double* x, const double* y, const double* z, std::size_t n, const Index* ids = nullptr,
+             const double* r = nullptr)
   {
     CGAL_precondition(n < none);
     const std::size_t nc = number_of_cells();
@@ -104,7 +106,17 @@ public:
     for(std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
     items_.resize(n);
     std::vector<Index> fill(start_.begin(), start_.end() - 1);
-    for(std::size_t i = 0; i < n; ++i) items_[fill[cell_[i]]++] = ids ? ids[i] : static_cast<Index>(i);
+    packed_.resize(r ? 4 * n : 0);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t s = fill[cell_[i]]++;
+      items_[s] = ids ? ids[i] : static_cast<Index>(i);
+      if(r)
+      {
+        double* q = &packed_[4 * s];
+        q[0] = x[i]; q[1] = y[i]; q[2] = z[i]; q[3] = r[i];
+      }
+    }
     std::fill(extra_head_.begin(), extra_head_.end(), none);
     std::fill(extra_tail_.begin(), extra_tail_.end(), none);
     extra_next_.clear();
@@ -126,6 +138,36 @@ public:
   template <class F>
   void for_each_near(double x, double y, double z, double radius, const F& f) const
   {
+    for_each_row(x, y, z, radius, [&](std::size_t c0, std::size_t c1) {
+      for(std::size_t c = c0; c <= c1; ++c)
+      {
+        for(Index s = start_[c]; s < start_[c + 1]; ++s) f(std::size_t(items_[s]));
+        for(Index e = extra_head_[c]; e != none; e = extra_next_[e]) f(std::size_t(e));
+      }
+    });
+  }
+
+  /// the same as `for_each_near()` with `f(j, q)`, `q` pointing to the copy of j's
+  /// coordinates and radius: a cell's points are read from one block of memory.
+  /// Needs a `build()` with radii, and no inserted points.
+  template <class F>
+  void for_each_near_packed(double x, double y, double z, double radius, const F& f) const
+  {
+    CGAL_precondition(packed_.size() == 4 * items_.size() && extra_next_.empty());
+    // the cells of a row are consecutive: one range of items
+    for_each_row(x, y, z, radius, [&](std::size_t c0, std::size_t c1) {
+      for(Index s = start_[c0]; s < start_[c1 + 1]; ++s) f(std::size_t(items_[s]), &packed_[4 * std::size_t(s)]);
+    });
+  }
+
+  /// the built points in cell order (a cheap spatial sort)
+  const std::vector<Index>& items_in_cell_order() const { return items_; }
+
+private:
+  // g(c0, c1) for each row of cells c0..c1 (along x) meeting the cube of half-side `radius` around (x,y,z)
+  template <class G>
+  void for_each_row(double x, double y, double z, double radius, const G& g) const
+  {
     const std::size_t x0 = cell_coordinate(x - radius, 0), x1 = cell_coordinate(x + radius, 0);
     const std::size_t y0 = cell_coordinate(y - radius, 1), y1 = cell_coordinate(y + radius, 1);
     const std::size_t z0 = cell_coordinate(z - radius, 2), z1 = cell_coordinate(z + radius, 2);
@@ -133,18 +175,10 @@ public:
       for(std::size_t j = y0; j <= y1; ++j)
       {
         const std::size_t row = (k * dims_[1] + j) * dims_[0];
-        for(std::size_t c = row + x0; c <= row + x1; ++c)
-        {
-          for(Index s = start_[c]; s < start_[c + 1]; ++s) f(std::size_t(items_[s]));
-          for(Index e = extra_head_[c]; e != none; e = extra_next_[e]) f(std::size_t(e));
-        }
+        g(row + x0, row + x1);
       }
   }
 
-  /// the built points in cell order (a cheap spatial sort)
-  const std::vector<Index>& items_in_cell_order() const { return items_; }
-
-private:
   double origin_[3] = {0., 0., 0.};
   std::size_t dims_[3] = {1, 1, 1};
   double cell_size_ = 1.;
@@ -152,6 +186,7 @@ private:
   std::vector<Index> start_;      // cell c holds items_[start_[c] .. start_[c+1])
   std::vector<Index> items_;
   std::vector<Index> cell_;       // cell of each built point
+  std::vector<double> packed_;    // x, y, z, r of the built points in cell order (if asked for)
   std::vector<Index> extra_head_, extra_tail_, extra_next_; // inserted points, chained per cell
 };
 
@@ -170,9 +205,12 @@ class Bubble_grid
 public:
   typedef Neighbor_grid::Index Index;
 
-  /// files balls `0..n-1`; `reach_factor * (r_i + r_j)` is the largest reach that queries will ask for
+  /// files balls `0..n-1`; `reach_factor * (r_i + r_j)` is the largest reach that queries will ask for.
+  /// With `packed`, the cells of the small grid are sized for two balls of the median radius,
+  /// not of the largest small one (queries visit more, smaller cells: fewer points to test),
+  /// and `for_each_near_packed()` may be used.
   void build(const double* x, const double* y, const double* z, const double* r, std::size_t n,
-             const double box[6], double reach_factor)
+             const double box[6], double reach_factor, bool packed = false)
   {
     // (radii are only read here)
     std::vector<double> radii(r, r + n);
@@ -193,8 +231,9 @@ public:
       else large_.push_back(Index(i));
     }
     r_large_ = largest;
-    setup(small_grid_, small_, x, y, z, box, reach_factor * 2. * (std::max)(r_small_, 1e-300));
-    setup(large_grid_, large_, x, y, z, box, reach_factor * 2. * (std::max)(r_large_, 1e-300));
+    const double small_cell = reach_factor * 2. * (std::max)(packed ? median : r_small_, 1e-300);
+    setup(small_grid_, small_, x, y, z, packed ? r : nullptr, box, small_cell);
+    setup(large_grid_, large_, x, y, z, packed ? r : nullptr, box, reach_factor * 2. * (std::max)(r_large_, 1e-300));
   }
 
   /// adds ball `i` (a name beyond the `n` of `build()`) at `(x,y,z)` with radius `r`
@@ -218,18 +257,30 @@ public:
       large_grid_.for_each_near(x, y, z, a + b * r_large_, f);
   }
 
+  /// the same as `for_each_near()` with `f(j, q)`, q pointing to x, y, z, r of ball j;
+  /// needs a packed `build()` and no `insert()`
+  template <class F>
+  void for_each_near_packed(double x, double y, double z, double a, double b, const F& f) const
+  {
+    small_grid_.for_each_near_packed(x, y, z, a + b * r_small_, f);
+    if(!large_.empty())
+      large_grid_.for_each_near_packed(x, y, z, a + b * r_large_, f);
+  }
+
   double largest_radius() const { return (std::max)(r_small_, r_large_); }
 
 private:
   static void setup(Neighbor_grid& grid, const std::vector<Index>& members, const double* x, const double* y,
-                    const double* z, const double box[6], double cell)
+                    const double* z, const double* r, const double box[6], double cell)
   {
     const std::size_t m = members.size();
     grid.set_domain(box[0] - cell, box[1] - cell, box[2] - cell, box[3] + cell, box[4] + cell, box[5] + cell,
                     cell, 4 * m + 64);
-    std::vector<double> gx(m), gy(m), gz(m);
+    std::vector<double> gx(m), gy(m), gz(m), gr(r ? m : 0);
     for(std::size_t k = 0; k < m; ++k) { gx[k] = x[members[k]]; gy[k] = y[members[k]]; gz[k] = z[members[k]]; }
-    grid.build(gx.data(), gy.data(), gz.data(), m, members.data());
+    if(r)
+      for(std::size_t k = 0; k < m; ++k) gr[k] = r[members[k]];
+    grid.build(gx.data(), gy.data(), gz.data(), m, members.data(), r ? gr.data() : nullptr);
   }
 
   double threshold_ = 0., r_small_ = 0., r_large_ = 0.;

@@ -62,7 +62,12 @@ mesh size; the surface recovery splits such triangles instead.
 
 The checks are the expensive part of a step, so a bubble carries a clearance:
 the radius of a ball around a checked position that meets no surface and no
-protected ball. Moves that stay inside it need no check. All queries are
+protected ball. Moves that stay inside it need no check. The others are
+answered from a sparse grid that lists, per cell, the balls and triangles
+near it (a bubble resting against a surface is checked at every step, and
+a walk down the AABB tree for each check made the relaxation of models with
+many such bubbles take hours); the tree serves the positions far from the
+surfaces and the inside test of start positions. All queries are
 `const` and may run from several threads once the object is built.
 */
 template <class GeomTraits>
@@ -137,7 +142,22 @@ public:
   {
     if(!tree_) return false;
     if(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) return false; // a valid position stays valid
-    return tree_->do_intersect(Segment_3(Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2])));
+    const Segment_3 seg(Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2]));
+    const double l2 = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+    // a triangle that meets a segment shorter than the pad lies within the pad of its end
+    // b, so b's cell lists it; the same exact predicate as the tree's, on fewer triangles
+    if(!(l2 < face_pad_ * face_pad_)) return tree_->do_intersect(seg);
+    double lo[3], hi[3];
+    for(int d = 0; d < 3; ++d) { lo[d] = (std::min)(a[d], b[d]); hi[d] = (std::max)(a[d], b[d]); }
+    bool hit = false;
+    for_each_face_near(cell_at(b), [&](std::uint32_t t) {
+      const Face& f = faces_[t];
+      for(int d = 0; d < 3; ++d)
+        if(f.hi[d] < lo[d] || f.lo[d] > hi[d]) return true;
+      hit = CGAL::do_intersect(seg, triangles_[t]);
+      return !hit;
+    });
+    return hit;
   }
 
   /// true when the segment `[a,b]` lies in the ball around `b` of squared
@@ -151,34 +171,21 @@ public:
   }
 
   /// the protected ball that holds `p` deepest, or `none`
-  std::size_t deepest_ball(const double p[3]) const
-  {
-    std::size_t best = none;
-    double best_depth = 0.;
-    const Cell_range range = balls_near(p);
-    for(std::uint32_t k = range.first; k < range.second; ++k)
-    {
-      const Ball& b = balls_[ball_index_[k]];
-      const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
-      const double d2 = dx * dx + dy * dy + dz * dz;
-      if(d2 < b.radius2)
-      {
-        const double depth = b.radius - std::sqrt(d2);
-        if(best == none || depth > best_depth) { best = ball_index_[k]; best_depth = depth; }
-      }
-    }
-    return best;
-  }
+  std::size_t deepest_ball(const double p[3]) const { return deepest_ball(p, cell_at(p)); }
 
   /// nearest a bubble of radius `radius` may come to a surface
   double gap(double radius) const { return 0.5 * settings_.offset_ratio * radius; }
+
+  /// how far the distance to the surfaces must be known for the checks of a bubble of
+  /// radius `radius`: the gap, plus half the radius so that its clearance spares a few steps
+  double wanted_distance(double radius) const { return gap(radius) + 0.5 * radius; }
 
   /// radius of a ball around `p` in which a bubble of radius `radius` meets no
   /// surface closer than `gap(radius)` and no protected ball; negative if it does at `p`
   double clearance(const double p[3], double radius) const
   {
     if(!tree_) return (std::numeric_limits<double>::max)();
-    return clearance(p, radius, CGAL::to_double(tree_->squared_distance(Point_3(p[0], p[1], p[2]))));
+    return clearance(p, radius, squared_distance_to_surfaces(p, wanted_distance(radius)));
   }
 
   /// the same, knowing the squared distance `d2` from `p` to the surfaces
@@ -187,17 +194,7 @@ public:
     const double dist = std::sqrt(d2) - gap(radius);
     // a protected ball lies within twice its radius of the surfaces (its centre is
     // at most one radius off its triangle): far from them no ball needs looking at
-    const double far = dist - 2. * largest_ball_radius_;
-    // the cell lists hold every ball within half a cell of the cell: beyond that we know nothing
-    double c = (std::min)(dist, 0.5 * ball_cell_size_);
-    const Cell_range range = balls_near(p);
-    for(std::uint32_t k = range.first; k < range.second; ++k)
-    {
-      const Ball& b = balls_[ball_index_[k]];
-      const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
-      c = (std::min)(c, std::sqrt(dx * dx + dy * dy + dz * dz) - b.radius);
-    }
-    return (std::max)(c, far);
+    return clearance(p, radius, d2, cell_at(p));
   }
 
   /*
@@ -217,7 +214,9 @@ public:
     clear = (std::numeric_limits<double>::max)();
     if(!tree_) return Confinement_result::UNCHANGED;
     double q[3] = {p[0], p[1], p[2]};
-    const double d2 = CGAL::to_double(tree_->squared_distance(Point_3(q[0], q[1], q[2])));
+    // one look-up of q's cell serves the distance, ball and clearance queries
+    const Cell* cell = cell_at(q);
+    const double d2 = squared_distance_to_surfaces(q, wanted_distance(radius), cell);
     const bool crossing = !surely_not_crossing(from, q, d2) && crosses(from, q);
     if(crossing || d2 < gap(radius) * gap(radius))
     {
@@ -231,7 +230,7 @@ public:
       if(!push_out_of_balls(from, q, pushed, normal)) return Confinement_result::REJECTED;
       if(pushed && crosses(from, q)) return Confinement_result::REJECTED;
     }
-    else if(deepest_ball(q) != none)
+    else if(deepest_ball(q, cell) != none)
     {
       // out of one ball: the closest point outside it (radially), the projection
       // that lets a bubble settle against the ball; where balls overlap, that
@@ -248,7 +247,7 @@ public:
     }
     else
     {
-      clear = clearance(q, radius, d2);
+      clear = clearance(q, radius, d2, cell);
       return Confinement_result::UNCHANGED;
     }
     p[0] = q[0]; p[1] = q[1]; p[2] = q[2];
@@ -308,12 +307,27 @@ private:
   static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
   typedef std::pair<std::uint32_t, std::uint32_t> Cell_range;
 
+  // what a cell of the sparse grid lists: ranges of `ball_index_` and `face_index_`
+  struct Cell
+  {
+    Cell_range balls = Cell_range(0, 0);
+    Cell_range faces = Cell_range(0, 0);
+  };
+
+  // a constraint triangle in doubles, for the distance scans
+  struct Face
+  {
+    double p[3][3];
+    double lo[3], hi[3]; // bounding box
+    bool flat;           // no area: distances to its edges
+  };
+
   struct Ball
   {
     double c[3];
     double radius;  // enlarged by the margin
     double radius2;
-    std::size_t triangle; // constraint triangle it protects, or none for an edge ball
+    std::size_t id; // index in `balls_`
   };
 
   void collect_triangles(const Geological_model_3<K>& model)
@@ -398,13 +412,13 @@ private:
     }
   }
 
-  void add_ball(const Point_3& c, double radius, std::size_t triangle)
+  void add_ball(const Point_3& c, double radius, std::size_t /* triangle */)
   {
     Ball b;
     for(int d = 0; d < 3; ++d) b.c[d] = CGAL::to_double(c[d]);
     b.radius = radius;
     b.radius2 = radius * radius;
-    b.triangle = triangle;
+    b.id = balls_.size();
     balls_.push_back(b);
   }
 
@@ -428,11 +442,13 @@ private:
     double largest = 0.;
     std::vector<double> rs;
     for(const Ball& b : balls_) { rs.push_back(b.radius); largest = (std::max)(largest, b.radius); }
-    double h = typical_radius_ > 0. ? 2. * typical_radius_ : 1.;
+    // cells of the median ball radius: a ball is listed in a few dozen cells and a cell
+    // lists a dozen balls; with cells twice as wide a query would scan about five times as many
+    double h = typical_radius_ > 0. ? typical_radius_ : 1.;
     if(!rs.empty())
     {
       std::nth_element(rs.begin(), rs.begin() + rs.size() / 2, rs.end());
-      h = 2. * rs[rs.size() / 2];
+      h = rs[rs.size() / 2];
     }
     const double ext = (std::max)({bbox_[3] - bbox_[0], bbox_[4] - bbox_[1], bbox_[5] - bbox_[2], 0.});
     // 2^21 cells per axis at most
@@ -450,7 +466,7 @@ private:
         const double c = (2. * b.radius + h) / h + 1.;
         cells += c * c * c;
       }
-      if(cells <= 64. * double(balls_.size()) + 1024.) break;
+      if(cells <= 128. * double(balls_.size()) + 1024.) break;
       h *= 1.25;
     }
     ball_cell_size_ = h;
@@ -467,42 +483,332 @@ private:
         lo[d] = coordinate(b.c[d] - b.radius - pad, d);
         hi[d] = coordinate(b.c[d] + b.radius + pad, d);
       }
+      // only the cells that come within the pad of the ball (the corners of its box do not)
+      const double reach = (b.radius + pad) * (1. + 1e-9) + 1e-9 * h;
       for(std::int64_t k = lo[2]; k <= hi[2]; ++k)
         for(std::int64_t j = lo[1]; j <= hi[1]; ++j)
           for(std::int64_t l = lo[0]; l <= hi[0]; ++l)
-            entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+          {
+            const std::int64_t cc[3] = {l, j, k};
+            double d2 = 0.;
+            for(int d = 0; d < 3; ++d)
+            {
+              const double c0 = ball_origin_[d] + double(cc[d]) * h, c1 = c0 + h;
+              const double o = (std::max)({c0 - b.c[d], 0., b.c[d] - c1});
+              d2 += o * o;
+            }
+            if(d2 <= reach * reach) entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+          }
     }
     std::sort(entries.begin(), entries.end());
+    std::unordered_map<std::uint64_t, Cell> cells;
     ball_index_.resize(entries.size());
     for(std::size_t e = 0; e < entries.size(); ++e)
     {
       ball_index_[e] = entries[e].second;
-      if(e == 0 || entries[e].first != entries[e - 1].first)
-        cells_[entries[e].first] = Cell_range(std::uint32_t(e), std::uint32_t(e));
-      ++cells_[entries[e].first].second;
+      Cell_range& range = cells[entries[e].first].balls;
+      if(e == 0 || entries[e].first != entries[e - 1].first) range = Cell_range(std::uint32_t(e), std::uint32_t(e));
+      ++range.second;
+    }
+    // the triangles' pad is a whole cell: distances are exact as far as with the coarser cells
+    build_face_lists(h, cells);
+    // an open-addressing table: a look-up is a multiplication and a probe or two
+    std::size_t bits = 4;
+    while((std::size_t(1) << bits) < 2 * cells.size()) ++bits;
+    slot_shift_ = 64 - int(bits);
+    slot_key_.assign(std::size_t(1) << bits, empty_key);
+    slot_cell_.assign(std::size_t(1) << bits, Cell());
+    // (filled in key order, so that the table does not depend on the map's iteration order)
+    std::vector<std::uint64_t> keys;
+    keys.reserve(cells.size());
+    for(const auto& kc : cells) keys.push_back(kc.first);
+    std::sort(keys.begin(), keys.end());
+    for(std::uint64_t k : keys)
+    {
+      std::size_t s = slot_of(k);
+      while(slot_key_[s] != empty_key) s = (s + 1) & (slot_key_.size() - 1);
+      slot_key_[s] = k;
+      slot_cell_[s] = cells[k];
+    }
+  }
+
+  static constexpr std::uint64_t empty_key = ~std::uint64_t(0); // never a key: coordinates have 21 bits
+  std::size_t slot_of(std::uint64_t k) const { return std::size_t((k * 0x9E3779B97F4A7C15ull) >> slot_shift_); }
+
+  /*
+  The triangles in the same sparse grid: each is listed in the cells that
+  come within `pad` of it (its box grown by the pad, less the cells too far
+  from its plane), so a cell lists every triangle within the pad of its
+  points, and the distance, crossing and projection queries of bubbles near
+  the surfaces scan a few triangles instead of walking the tree. A triangle
+  that would fill too many cells is scanned by every query instead.
+  */
+  void build_face_lists(double pad, std::unordered_map<std::uint64_t, Cell>& cells)
+  {
+    const double h = ball_cell_size_;
+    face_pad_ = pad;
+    faces_.resize(triangles_.size());
+    std::vector<std::pair<std::uint64_t, std::uint32_t> > entries;
+    const double reach = pad + 0.5 * std::sqrt(3.) * h; // pad plus half a cell diagonal
+    for(std::size_t i = 0; i < triangles_.size(); ++i)
+    {
+      Face& f = faces_[i];
+      for(int v = 0; v < 3; ++v)
+        for(int d = 0; d < 3; ++d) f.p[v][d] = CGAL::to_double(triangles_[i][v][d]);
+      for(int d = 0; d < 3; ++d)
+      {
+        f.lo[d] = (std::min)({f.p[0][d], f.p[1][d], f.p[2][d]});
+        f.hi[d] = (std::max)({f.p[0][d], f.p[1][d], f.p[2][d]});
+      }
+      double l2 = 0.;
+      for(int e = 0; e < 3; ++e)
+      {
+        double s = 0.;
+        for(int d = 0; d < 3; ++d) s += (f.p[(e + 1) % 3][d] - f.p[e][d]) * (f.p[(e + 1) % 3][d] - f.p[e][d]);
+        l2 = (std::max)(l2, s);
+      }
+      const double ab[3] = {f.p[1][0] - f.p[0][0], f.p[1][1] - f.p[0][1], f.p[1][2] - f.p[0][2]};
+      const double ac[3] = {f.p[2][0] - f.p[0][0], f.p[2][1] - f.p[0][1], f.p[2][2] - f.p[0][2]};
+      const double cr[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+      const double n2 = dot(cr, cr);
+      // a sliver of a triangle: its plane and corner regions are ill-conditioned, use its edges
+      f.flat = !(n2 > 1e-20 * l2 * l2) ||
+               (normal_[i][0] == 0. && normal_[i][1] == 0. && normal_[i][2] == 0.);
+      std::int64_t lo[3], hi[3];
+      double cells = 1.;
+      for(int d = 0; d < 3; ++d)
+      {
+        lo[d] = coordinate(f.lo[d] - pad, d);
+        hi[d] = coordinate(f.hi[d] + pad, d);
+        cells *= double(hi[d] - lo[d] + 1);
+      }
+      if(cells > 4096.) { wide_faces_.push_back(std::uint32_t(i)); continue; }
+      const double* n = normal_[i].data();
+      // cells far from the plane are left out only when the unit normal is accurate: its
+      // error, about 1e-16 l^2 / |ab x ac|, stays under 1e-10 here, and the margin below covers it
+      const bool planar = n2 > 1e-12 * l2 * l2;
+      const double margin = 1e-8 * (std::sqrt(l2) + reach + h);
+      for(std::int64_t k = lo[2]; k <= hi[2]; ++k)
+        for(std::int64_t j = lo[1]; j <= hi[1]; ++j)
+          for(std::int64_t l = lo[0]; l <= hi[0]; ++l)
+          {
+            if(planar)
+            {
+              const double c[3] = {ball_origin_[0] + (double(l) + 0.5) * h, ball_origin_[1] + (double(j) + 0.5) * h,
+                                   ball_origin_[2] + (double(k) + 0.5) * h};
+              const double off = (c[0] - f.p[0][0]) * n[0] + (c[1] - f.p[0][1]) * n[1] + (c[2] - f.p[0][2]) * n[2];
+              if(std::abs(off) > reach + margin) continue;
+            }
+            entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+          }
+    }
+    std::sort(entries.begin(), entries.end());
+    face_index_.resize(entries.size());
+    for(std::size_t e = 0; e < entries.size(); ++e)
+    {
+      face_index_[e] = entries[e].second;
+      Cell_range& range = cells[entries[e].first].faces;
+      if(e == 0 || entries[e].first != entries[e - 1].first) range = Cell_range(std::uint32_t(e), std::uint32_t(e));
+      ++range.second;
+    }
+  }
+
+  const Cell* cell_at(const double p[3]) const
+  {
+    if(slot_key_.empty()) return nullptr;
+    const std::uint64_t k = key(coordinate(p[0], 0), coordinate(p[1], 1), coordinate(p[2], 2));
+    for(std::size_t s = slot_of(k);; s = (s + 1) & (slot_key_.size() - 1))
+    {
+      if(slot_key_[s] == k) return &slot_cell_[s];
+      if(slot_key_[s] == empty_key) return nullptr;
     }
   }
 
   Cell_range balls_near(const double p[3]) const
   {
-    const auto it = cells_.find(key(coordinate(p[0], 0), coordinate(p[1], 1), coordinate(p[2], 2)));
-    return it == cells_.end() ? Cell_range(0, 0) : it->second;
+    const Cell* c = cell_at(p);
+    return c ? c->balls : Cell_range(0, 0);
+  }
+
+  // f(t) for the triangles listed in cell `c` (p's cell), then the wide ones; stops when f
+  // returns false. Together they hold every triangle within `face_pad_` of p.
+  template <class F>
+  void for_each_face_near(const Cell* c, const F& f) const
+  {
+    if(c)
+      for(std::uint32_t k = c->faces.first; k < c->faces.second; ++k)
+        if(!f(face_index_[k])) return;
+    for(std::uint32_t t : wide_faces_)
+      if(!f(t)) return;
+  }
+
+  /// the protected ball that holds `p` deepest, or `none`; `cell` is p's
+  std::size_t deepest_ball(const double p[3], const Cell* cell) const
+  {
+    if(!cell) return none;
+    std::size_t best = none;
+    double best_depth = 0.;
+    for(std::uint32_t k = cell->balls.first; k < cell->balls.second; ++k)
+    {
+      const Ball& b = balls_[ball_index_[k]];
+      const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(d2 < b.radius2)
+      {
+        const double depth = b.radius - std::sqrt(d2);
+        if(best == none || depth > best_depth) { best = b.id; best_depth = depth; }
+      }
+    }
+    return best;
+  }
+
+  // clearance() knowing the squared distance to the surfaces and p's cell
+  double clearance(const double p[3], double radius, double d2, const Cell* cell) const
+  {
+    const double dist = std::sqrt(d2) - gap(radius);
+    // a protected ball lies within twice its radius of the surfaces (its centre is
+    // at most one radius off its triangle): far from them no ball needs looking at
+    const double far = dist - 2. * largest_ball_radius_;
+    // the cell lists hold every ball within half a cell of the cell: beyond that we know nothing
+    double c = (std::min)(dist, 0.5 * ball_cell_size_);
+    if(cell)
+      for(std::uint32_t k = cell->balls.first; k < cell->balls.second; ++k)
+      {
+        const Ball& b = balls_[ball_index_[k]];
+        const double dx = p[0] - b.c[0], dy = p[1] - b.c[1], dz = p[2] - b.c[2];
+        const double l2 = dx * dx + dy * dy + dz * dz, reach = c + b.radius;
+        // a root only for the balls that come nearer than c
+        if(reach > 0. && l2 < reach * reach) c = (std::min)(c, std::sqrt(l2) - b.radius);
+      }
+    return (std::max)(c, far);
+  }
+
+  static double dot(const double u[3], const double v[3]) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+
+  // squared distance from p to the segment [a,b], and its closest point q
+  static double point_segment_d2(const double p[3], const double a[3], const double b[3], double q[3])
+  {
+    const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    const double l2 = dot(ab, ab);
+    const double t = l2 > 0. ? (std::min)(1., (std::max)(0., dot(ap, ab) / l2)) : 0.;
+    double d2 = 0.;
+    for(int d = 0; d < 3; ++d)
+    {
+      q[d] = a[d] + t * ab[d];
+      d2 += (p[d] - q[d]) * (p[d] - q[d]);
+    }
+    return d2;
+  }
+
+  // squared distance from p to a triangle, and its closest point q: the region of the
+  // triangle's plane (corner, edge or inside) p projects to decides which feature is nearest
+  static double point_face_d2(const double p[3], const Face& f, double q[3])
+  {
+    const double* a = f.p[0];
+    const double* b = f.p[1];
+    const double* c = f.p[2];
+    if(f.flat)
+    {
+      double best = point_segment_d2(p, a, b, q), r[3];
+      for(int e = 1; e < 3; ++e)
+      {
+        const double d2 = point_segment_d2(p, f.p[e], f.p[(e + 1) % 3], r);
+        if(d2 < best) { best = d2; q[0] = r[0]; q[1] = r[1]; q[2] = r[2]; }
+      }
+      return best;
+    }
+    const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    const double bp[3] = {p[0] - b[0], p[1] - b[1], p[2] - b[2]}, cp[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp);
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    double u = 0., v = 0.; // q = a + u ab + v ac
+    if(d1 <= 0. && d2 <= 0.) {}                                        // corner a
+    else if(d3 >= 0. && d4 <= d3) u = 1.;                              // corner b
+    else if(d6 >= 0. && d5 <= d6) v = 1.;                              // corner c
+    else if(vc <= 0. && d1 >= 0. && d3 <= 0.) u = d1 / (d1 - d3);      // edge ab
+    else if(vb <= 0. && d2 >= 0. && d6 <= 0.) v = d2 / (d2 - d6);      // edge ac
+    else if(va <= 0. && d4 - d3 >= 0. && d5 - d6 >= 0.)                // edge bc
+    {
+      v = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+      u = 1. - v;
+    }
+    else
+    {
+      const double inv = 1. / (va + vb + vc);
+      u = vb * inv;
+      v = vc * inv;
+    }
+    double d2q = 0.;
+    for(int d = 0; d < 3; ++d)
+    {
+      q[d] = a[d] + u * ab[d] + v * ac[d];
+      d2q += (p[d] - q[d]) * (p[d] - q[d]);
+    }
+    return d2q;
+  }
+
+  /*
+  Squared distance from p to the constraint surfaces, and optionally the
+  nearest triangle and point. The cell lists hold every triangle within the
+  pad of p, so when one of them is nearer than the pad it is the nearest one.
+  Otherwise the pad is a lower bound, returned when the caller needs the
+  distance only up to `wanted` <= pad (a bubble deep inside its region then
+  costs a cell look-up, not a walk down the tree); else the tree answers.
+  */
+  double squared_distance_to_surfaces(const double p[3], double wanted, std::size_t* tri = nullptr,
+                                      double q[3] = nullptr) const
+  {
+    return squared_distance_to_surfaces(p, wanted, cell_at(p), tri, q);
+  }
+
+  double squared_distance_to_surfaces(const double p[3], double wanted, const Cell* cell, std::size_t* tri = nullptr,
+                                      double q[3] = nullptr) const
+  {
+    const double pad2 = face_pad_ * face_pad_;
+    double best = pad2, r[3], bq[3] = {0., 0., 0.};
+    std::size_t bt = none;
+    for_each_face_near(cell, [&](std::uint32_t t) {
+      const Face& f = faces_[t];
+      // the box's distance bounds the triangle's: most candidates stop here
+      double lb = 0.;
+      for(int d = 0; d < 3; ++d)
+      {
+        const double o = (std::max)({f.lo[d] - p[d], 0., p[d] - f.hi[d]});
+        lb += o * o;
+      }
+      if(lb >= best) return true;
+      const double d2 = point_face_d2(p, f, r);
+      if(d2 < best) { best = d2; bt = t; bq[0] = r[0]; bq[1] = r[1]; bq[2] = r[2]; }
+      return true;
+    });
+    if(bt == none && wanted <= face_pad_ && !tri && !q) return pad2;
+    if(bt == none)
+    {
+      const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
+      bt = std::size_t(cp.second - triangles_.begin());
+      for(int d = 0; d < 3; ++d) bq[d] = CGAL::to_double(cp.first[d]);
+      best = (p[0] - bq[0]) * (p[0] - bq[0]) + (p[1] - bq[1]) * (p[1] - bq[1]) + (p[2] - bq[2]) * (p[2] - bq[2]);
+    }
+    if(tri) *tri = bt;
+    if(q) { q[0] = bq[0]; q[1] = bq[1]; q[2] = bq[2]; }
+    return best;
   }
 
   // p lies across a surface seen from `from`: closest surface point to p, then inward
   bool too_close(const double p[3], double radius) const
   {
     const double g = gap(radius);
-    return CGAL::to_double(tree_->squared_distance(Point_3(p[0], p[1], p[2]))) < g * g;
+    return squared_distance_to_surfaces(p, g) < g * g;
   }
 
   bool put_back(const double from[3], const double p[3], double radius, double off, double q[3],
                 double normal[3]) const
   {
-    const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
-    const std::size_t t = std::size_t(cp.second - triangles_.begin());
-    const double c[3] = {CGAL::to_double(cp.first.x()), CGAL::to_double(cp.first.y()),
-                         CGAL::to_double(cp.first.z())};
+    double c[3];
+    std::size_t t = 0;
+    squared_distance_to_surfaces(p, (std::numeric_limits<double>::max)(), &t, c);
     double s = inward_sign_[t];
     if(!is_boundary_[t])
     {
@@ -559,7 +865,7 @@ private:
       const double disc = b * b - a * c;
       if(b >= 0. || disc < 0.) continue; // moving away, or missing it
       const double t = (-b - std::sqrt(disc)) / a;
-      if(t < t_min) { t_min = t; hit = ball_index_[k]; }
+      if(t < t_min) { t_min = t; hit = ball.id; }
     }
     if(hit == none) return false;
     // a hair short of the ball, so that rounding cannot put q inside it
@@ -636,8 +942,14 @@ private:
   double ball_cell_size_ = 1.;
   double largest_ball_radius_ = 0.;
   double ball_origin_[3] = {0., 0., 0.};
-  std::vector<std::uint32_t> ball_index_;
-  std::unordered_map<std::uint64_t, Cell_range> cells_;
+  std::vector<std::uint32_t> ball_index_; // the cells' ball lists
+  std::vector<std::uint64_t> slot_key_;   // the cells that list something, by hash
+  std::vector<Cell> slot_cell_;
+  int slot_shift_ = 60;
+  std::vector<Face> faces_;                // one per triangle
+  std::vector<std::uint32_t> face_index_;  // the cells' triangle lists
+  std::vector<std::uint32_t> wide_faces_;  // triangles too wide to list: scanned by every query
+  double face_pad_ = 0.;                   // a cell lists every triangle within this of its points
 };
 
 } // namespace internal
