@@ -85,24 +85,31 @@ struct Builder
     return pts;
   }
 
+  // polygon with corners in order around, a fan around `centre` (from which
+  // every corner must be seen), normal along `normal` side
+  void polygon(std::size_t patch, const std::vector<Point>& corners, const Point& centre, const Vector& normal)
+  {
+    std::vector<std::size_t> ring;
+    for(std::size_t i = 0; i < corners.size(); ++i)
+    {
+      std::vector<std::size_t> pts = edge(corners[i], corners[(i + 1) % corners.size()]);
+      ring.insert(ring.end(), pts.begin(), pts.end() - 1);
+    }
+    const std::size_t c = point(centre);
+    const bool flip = CGAL::cross_product(corners[0] - centre, corners[1] - centre) * normal < 0;
+    for(std::size_t i = 0; i < ring.size(); ++i)
+    {
+      const std::size_t u = ring[i], v = ring[(i + 1) % ring.size()];
+      if(flip) model.add_triangle(c, v, u, patch);
+      else model.add_triangle(c, u, v, patch);
+    }
+  }
+
   // rectangle a b c d (in order around), normal along `normal` side
   void rectangle(std::size_t patch, const Point& a, const Point& b, const Point& c, const Point& d,
                  const Vector& normal)
   {
-    std::vector<std::size_t> ring;
-    for(const auto& e : {std::make_pair(a, b), std::make_pair(b, c), std::make_pair(c, d), std::make_pair(d, a)})
-    {
-      std::vector<std::size_t> pts = edge(e.first, e.second);
-      ring.insert(ring.end(), pts.begin(), pts.end() - 1);
-    }
-    const std::size_t centre = point(CGAL::centroid(a, b, c, d));
-    const bool flip = CGAL::cross_product(b - a, c - a) * normal < 0;
-    for(std::size_t i = 0; i < ring.size(); ++i)
-    {
-      const std::size_t u = ring[i], v = ring[(i + 1) % ring.size()];
-      if(flip) model.add_triangle(centre, v, u, patch);
-      else model.add_triangle(centre, u, v, patch);
-    }
+    polygon(patch, std::vector<Point>{a, b, c, d}, CGAL::centroid(a, b, c, d), normal);
   }
 };
 
@@ -143,6 +150,54 @@ Model test_model()
     b.rectangle(side, Point(0, 8, lo), Point(0, 0, lo), Point(0, 0, hi), Point(0, 8, hi), Vector(-1, 0, 0));
   }
   b.rectangle(fault, Point(5, 2, 2.3), Point(5, 6, 2.3), Point(5, 6, 3.5), Point(5, 2, 3.5), Vector(1, 0, 0));
+  return b.model;
+}
+
+// Two layers of the box [0,10] x [0,4] x [0,10] on both sides of the
+// horizon h (z = 5), which a small reverse fault offsets: the fault strip f
+// (another patch) is the quadrilateral P1 Pa P3 Pb, with the fault tips P1
+// = (5,1,5) and P3 = (5,3,5) and the most offset points Pa = (5.15,2,4.85) on
+// the footwall side and Pb = (4.85,2,5.15) on the hangingwall side. Seen
+// from above, h is one piece whose triangles all face up and whose borders
+// (the box rim and the two fault cut lines P1 Pa P3 and P1 Pb P3) do not
+// cross, yet it covers the lens between the cut lines twice: CloudSpin's
+// horizon KOBE_1 along its fault strips.
+Model overhang_model()
+{
+  Builder b;
+  const std::size_t lower = b.model.add_region("lower"), upper = b.model.add_region("upper");
+  const std::size_t base = b.model.add_patch("base", 0, lower), roof = b.model.add_patch("roof", 0, upper);
+  const std::size_t h = b.model.add_patch("h", upper, lower), f = b.model.add_patch("f", upper, lower);
+  const std::size_t sides_lower = b.model.add_patch("sides_lower", 0, lower),
+                    sides_upper = b.model.add_patch("sides_upper", 0, upper);
+  // the horizon meets the sides y = 0 and y = 4 at x = 5 too
+  b.set_edge(Point(0, 0, 5), Point(10, 0, 5), {0.5});
+  b.set_edge(Point(0, 4, 5), Point(10, 4, 5), {0.5});
+  b.rectangle(base, Point(0, 0, 0), Point(10, 0, 0), Point(10, 4, 0), Point(0, 4, 0), Vector(0, 0, -1));
+  b.rectangle(roof, Point(0, 0, 10), Point(10, 0, 10), Point(10, 4, 10), Point(0, 4, 10), Vector(0, 0, 1));
+  for(double x : {0., 10.})
+  {
+    const Vector out(x == 0. ? -1 : 1, 0, 0);
+    b.rectangle(sides_lower, Point(x, 0, 0), Point(x, 4, 0), Point(x, 4, 5), Point(x, 0, 5), out);
+    b.rectangle(sides_upper, Point(x, 0, 5), Point(x, 4, 5), Point(x, 4, 10), Point(x, 0, 10), out);
+  }
+  for(double y : {0., 4.})
+  {
+    const Vector out(0, y == 0. ? -1 : 1, 0);
+    b.rectangle(sides_lower, Point(0, y, 0), Point(10, y, 0), Point(10, y, 5), Point(0, y, 5), out);
+    b.rectangle(sides_upper, Point(0, y, 5), Point(10, y, 5), Point(10, y, 10), Point(0, y, 10), out);
+  }
+  const Point p1(5, 1, 5), pa(5.15, 2, 4.85), p3(5, 3, 5), pb(4.85, 2, 5.15);
+  // the upper layer lies under the strip: its normal points down
+  b.polygon(f, {p1, pa, p3, pb}, Point(5, 2, 5), Vector(0, 0, -1));
+  // h: footwall triangles on the cut line P1 Pa P3 (from x < 5.15),
+  // hangingwall ones on P1 Pb P3 (from x > 4.85), and a ring to the box
+  const Point l(3, 1.8, 5), r(7, 2, 5), c00(0, 0, 5), c10(10, 0, 5), c11(10, 4, 5), c01(0, 4, 5), m0(5, 0, 5),
+    m4(5, 4, 5);
+  const std::array<Point, 3> up[] = {{l, p1, pa}, {l, pa, p3},  {r, p3, pb},    {r, pb, p1},   {c00, m0, p1},
+                                     {c00, p1, l}, {c00, l, c01}, {c01, l, p3}, {c01, p3, m4}, {m0, c10, r},
+                                     {m0, r, p1},  {c10, c11, r}, {r, c11, m4}, {r, m4, p3}};
+  for(const auto& t : up) b.model.add_triangle(b.point(t[0]), b.point(t[1]), b.point(t[2]), h);
   return b.model;
 }
 
@@ -369,6 +424,55 @@ void test_in_memory(BM::Surface_remeshing_method method)
   assert(again.triangles() == output.triangles());
 }
 
+// A patch that covers part of its plane twice (the horizon of
+// overhang_model()) is not one chart: flattened as one, the band covered
+// twice fell out of the chart's domain and the new triangles along both
+// fault cut lines lay on the wrong side of them (inconsistently oriented
+// region boundaries).
+void test_overhang()
+{
+  std::cout << "remesh_surfaces on a horizon offset by a reverse fault\n";
+  const Model input = overhang_model();
+  BM::validate_geological_model(input);
+  const BM::Model_features f = BM::detect_model_features(input);
+  const BM::internal::Edge_triangles_map et = BM::internal::edge_triangles(input);
+  BM::internal::Edge_set feature_edges;
+  for(const auto& c : f.curves)
+    for(std::size_t i = 0; i + 1 < c.points.size(); ++i)
+      feature_edges[BM::internal::edge_key(c.points[i], c.points[i + 1])] = 1;
+  const std::size_t h = 2;
+  assert(input.patch(h).name == "h");
+  BM::internal::Remesh_chart<K> whole;
+  whole.patch = h;
+  whole.triangles = f.patch_triangles[h];
+  BM::internal::set_chart_frame(input, whole);
+  // every triangle faces up and no border crosses another, yet it is no chart
+  assert(!BM::internal::is_valid_chart(input, whole, et, feature_edges));
+  // the footwall side alone is one
+  BM::internal::Remesh_chart<K> sheet = whole;
+  sheet.triangles.clear();
+  for(std::size_t t : whole.triangles)
+    if(CGAL::centroid(input.point(input.triangle(t)[0]), input.point(input.triangle(t)[1]),
+                      input.point(input.triangle(t)[2])).x() < 4.5)
+      sheet.triangles.push_back(t);
+  BM::internal::set_chart_frame(input, sheet);
+  assert(BM::internal::is_valid_chart(input, sheet, et, feature_edges));
+
+  Model output;
+  const auto np = BM::parameters::edge_length(0.5);
+  BM::Remeshing_sizing_field<K> field(input, f, np);
+  const BM::Remeshing_sizing_field<K> given = field;
+  const BM::Surface_remeshing_report r = BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field, np));
+  print("overhang", r);
+  assert(r.number_of_chart_cuts > 0);
+  // h bends by a few degrees at the fault: chords across those folds move
+  // the volumes a little (the surface is planar elsewhere). The strip f is
+  // a lens narrower than the size, with 24-degree tips: triangles across
+  // it next to the tips are under 25 degrees without being at a tip
+  check_remeshed(input, output, r, field, given, false, false);
+  assert(r.max_relative_volume_error < 1e-4);
+}
+
 // GOCAD models named on the command line, looked up in ../shared when not a path
 // (a real model takes tens of seconds: too long for every CI run)
 void test_real_models(const std::vector<std::string>& names)
@@ -407,6 +511,7 @@ int main(int argc, char** argv)
   test_sizing();
   test_in_memory(BM::Surface_remeshing_method::BUBBLES);
   test_in_memory(BM::Surface_remeshing_method::ISOTROPIC);
+  test_overhang();
   test_real_models(std::vector<std::string>(argv + 1, argv + argc));
   std::cout << "all remesh_surfaces checks passed\n";
   return EXIT_SUCCESS;

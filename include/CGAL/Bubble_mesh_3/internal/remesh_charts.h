@@ -324,22 +324,32 @@ bool is_valid_chart(const Geological_model_3<GeomTraits>& model, const Remesh_ch
     if(!(CGAL::to_double(an * chart.normal) > 0.) && areas[i] > 1e-12 * total) return false;
   }
 
-  // edges to keep: border of the chart and edges of inner features
+  // edges to keep: border of the chart and edges of inner features; and
+  // the net number of chart triangles running along each edge (a -> b for
+  // a < b, minus b -> a), which says how the chart covers the plane there
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> count;
+  std::map<std::pair<std::size_t, std::size_t>, long> net;
   for(std::size_t t : chart.triangles)
   {
     const auto& tri = model.triangle(t);
-    for(int k = 0; k < 3; ++k) ++count[edge_key(tri[k], tri[(k + 1) % 3])];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t a = tri[k], b = tri[(k + 1) % 3];
+      ++count[edge_key(a, b)];
+      net[edge_key(a, b)] += (a < b) ? 1 : -1;
+    }
   }
   typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, GeomTraits> Vb;
-  typedef CGAL::Constrained_triangulation_face_base_2<GeomTraits> Fb;
+  typedef CGAL::Triangulation_face_base_with_info_2<long, GeomTraits> Fbi;
+  typedef CGAL::Constrained_triangulation_face_base_2<GeomTraits, Fbi> Fb;
   typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
   typedef CGAL::Constrained_Delaunay_triangulation_2<GeomTraits, Tds,
                                                      CGAL::No_constraint_intersection_requiring_constructions_tag> Cdt;
+  typedef typename Cdt::Face_handle Face_handle;
   Cdt cdt;
   std::map<std::size_t, typename Cdt::Vertex_handle> vh;
   auto kept = [&](const std::pair<const std::pair<std::size_t, std::size_t>, std::size_t>& e) {
-    return e.second != 2 || feature_edges.count(e.first) != 0;
+    return e.second != 2 || feature_edges.count(e.first) != 0 || net[e.first] != 0;
   };
   std::size_t expected = 0;
   try
@@ -354,6 +364,7 @@ bool is_valid_chart(const Geological_model_3<GeomTraits>& model, const Remesh_ch
         const std::size_t before = cdt.number_of_vertices();
         typename Cdt::Vertex_handle h = cdt.insert(chart.to_2d(model.point(v)));
         if(cdt.number_of_vertices() == before) return false; // two points on one spot of the plane
+        h->info() = v;
         vh[v] = h;
       }
     }
@@ -368,7 +379,51 @@ bool is_valid_chart(const Geological_model_3<GeomTraits>& model, const Remesh_ch
   std::size_t constrained = 0;
   for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
     if(cdt.is_constrained(*e)) ++constrained;
-  return constrained == expected;
+  if(constrained != expected) return false;
+
+  // How many times the chart covers each face of the plane (its winding
+  // number): 0 outside, and 1 inside when the chart projects one-to-one.
+  // Two sheets of the chart can overlap in the plane without any border
+  // crossing another (a horizon on both sides of a reverse fault, whose
+  // two cut lines project side by side): the overlap is covered twice, and
+  // the re-meshed triangles next to those borders would land on the wrong
+  // side of them. A face lies left of its edges (ccw), so stepping across
+  // the edge u -> v from the left to the right removes the chart triangles
+  // running along u -> v. Crumbs (see above) may cover a speck twice.
+  const long unset = std::numeric_limits<long>::min();
+  for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = unset;
+  std::deque<Face_handle> queue(1, cdt.infinite_face());
+  cdt.infinite_face()->info() = 0;
+  double wrong_area = 0., area_2d = 0.;
+  while(!queue.empty())
+  {
+    const Face_handle f = queue.front();
+    queue.pop_front();
+    if(!cdt.is_infinite(f) && f->info() != 0 && f->info() != 1)
+      wrong_area += std::abs(CGAL::to_double(CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(),
+                                                        f->vertex(2)->point())));
+    for(int i = 0; i < 3; ++i)
+    {
+      const Face_handle g = f->neighbor(i);
+      if(g->info() != unset) continue;
+      long w = f->info();
+      if(cdt.is_constrained(std::make_pair(f, i)))
+      {
+        const std::size_t u = f->vertex(cdt.ccw(i))->info(), v = f->vertex(cdt.cw(i))->info();
+        const long n = net[edge_key(u, v)];
+        w -= (u < v) ? n : -n;
+      }
+      g->info() = w;
+      queue.push_back(g);
+    }
+  }
+  for(std::size_t t : chart.triangles)
+  {
+    const auto& tri = model.triangle(t);
+    area_2d += std::abs(CGAL::to_double(CGAL::area(chart.to_2d(model.point(tri[0])), chart.to_2d(model.point(tri[1])),
+                                                   chart.to_2d(model.point(tri[2])))));
+  }
+  return wrong_area <= 1e-9 * area_2d;
 }
 
 } // namespace internal
