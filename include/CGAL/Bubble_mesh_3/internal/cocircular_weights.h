@@ -135,61 +135,71 @@ std::vector<double> cocircular_tie_weights(const Geological_model_3<GeomTraits>&
 
   // per set: the main direction of its wanted diagonals (power iteration on
   // the sum of u u^T, from the first diagonal), and s = squared distance
-  // along it, over the set's squared extent
+  // along it, over the set's squared extent. One pass over the quads and
+  // their points: a model can hold many small sets.
   std::vector<double> s(np, 0.);
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> slot(np, none); // set index of a root
   std::vector<std::size_t> roots;
-  for(const Cocircular_quad& q : quads) roots.push_back(find(q.v[0]));
-  std::sort(roots.begin(), roots.end());
-  roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
-  for(std::size_t root : roots)
+  for(const Cocircular_quad& q : quads)
   {
-    std::array<double, 9> m = {{0, 0, 0, 0, 0, 0, 0, 0, 0}};
-    std::array<double, 3> dir = {{0, 0, 0}};
-    for(const Cocircular_quad& q : quads)
-    {
-      if(find(q.v[0]) != root) continue;
-      const std::array<double, 3> a = coords(q.v[0]), c = coords(q.v[1]);
-      std::array<double, 3> u = {{c[0] - a[0], c[1] - a[1], c[2] - a[2]}};
-      const double l = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-      for(double& x : u) x /= l;
-      if(dir[0] == 0. && dir[1] == 0. && dir[2] == 0.) dir = u;
-      for(int r = 0; r < 3; ++r)
-        for(int k = 0; k < 3; ++k) m[3 * r + k] += u[r] * u[k];
-    }
+    const std::size_t r = find(q.v[0]);
+    if(slot[r] == none) { slot[r] = roots.size(); roots.push_back(r); }
+  }
+  auto set_of = [&](std::size_t v) { return slot[find(v)]; };
+  std::vector<std::array<double, 9> > m(roots.size(), std::array<double, 9>{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+  std::vector<std::array<double, 3> > dir(roots.size(), std::array<double, 3>{{0, 0, 0}});
+  for(const Cocircular_quad& q : quads)
+  {
+    const std::size_t k = set_of(q.v[0]);
+    const std::array<double, 3> a = coords(q.v[0]), c = coords(q.v[1]);
+    std::array<double, 3> u = {{c[0] - a[0], c[1] - a[1], c[2] - a[2]}};
+    const double l = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for(double& x : u) x /= l;
+    if(dir[k][0] == 0. && dir[k][1] == 0. && dir[k][2] == 0.) dir[k] = u;
+    for(int r = 0; r < 3; ++r)
+      for(int j = 0; j < 3; ++j) m[k][3 * r + j] += u[r] * u[j];
+  }
+  for(std::size_t k = 0; k < roots.size(); ++k)
     for(int it = 0; it < 64; ++it)
     {
       std::array<double, 3> next = {{0, 0, 0}};
       for(int r = 0; r < 3; ++r)
-        for(int k = 0; k < 3; ++k) next[r] += m[3 * r + k] * dir[k];
+        for(int j = 0; j < 3; ++j) next[r] += m[k][3 * r + j] * dir[k][j];
       const double l = std::sqrt(next[0] * next[0] + next[1] * next[1] + next[2] * next[2]);
       if(!(l > 0.)) break;
-      for(int r = 0; r < 3; ++r) dir[r] = next[r] / l;
+      for(int r = 0; r < 3; ++r) dir[k][r] = next[r] / l;
     }
-    const std::array<double, 3> o = coords(root);
-    double extent2 = 0.;
-    for(std::size_t i = 0; i < np; ++i)
-      if(find(i) == root)
-      {
-        const std::array<double, 3> p = coords(i);
-        extent2 = (std::max)(extent2, (p[0] - o[0]) * (p[0] - o[0]) + (p[1] - o[1]) * (p[1] - o[1]) +
-                                        (p[2] - o[2]) * (p[2] - o[2]));
-      }
-    for(std::size_t i = 0; i < np; ++i)
-      if(find(i) == root)
-      {
-        const std::array<double, 3> p = coords(i);
-        const double along = (p[0] - o[0]) * dir[0] + (p[1] - o[1]) * dir[1] + (p[2] - o[2]) * dir[2];
-        s[i] = along * along / extent2;
-      }
-    // each quad asks for a margin of a thousandth of what a quad of its size
-    // gets from a quadratic along its own diagonal
-    for(Cocircular_quad& q : quads)
-      if(find(q.v[0]) == root)
-      {
-        const std::array<double, 3> a = coords(q.v[0]), c = coords(q.v[1]);
-        const double d2 = (c[0] - a[0]) * (c[0] - a[0]) + (c[1] - a[1]) * (c[1] - a[1]) + (c[2] - a[2]) * (c[2] - a[2]);
-        q.margin = 1e-3 * d2 / extent2;
-      }
+  // the points of the sets are the quads' corners
+  std::vector<std::size_t> members;
+  for(const Cocircular_quad& q : quads) members.insert(members.end(), q.v.begin(), q.v.end());
+  std::sort(members.begin(), members.end());
+  members.erase(std::unique(members.begin(), members.end()), members.end());
+  auto offset = [&](std::size_t i) {
+    const std::array<double, 3> p = coords(i), o = coords(roots[set_of(i)]);
+    return std::array<double, 3>{{p[0] - o[0], p[1] - o[1], p[2] - o[2]}};
+  };
+  std::vector<double> extent2(roots.size(), 0.);
+  for(std::size_t i : members)
+  {
+    const std::array<double, 3> d = offset(i);
+    double& e = extent2[set_of(i)];
+    e = (std::max)(e, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+  for(std::size_t i : members)
+  {
+    const std::array<double, 3> d = offset(i);
+    const std::array<double, 3>& u = dir[set_of(i)];
+    const double along = d[0] * u[0] + d[1] * u[1] + d[2] * u[2];
+    s[i] = along * along / extent2[set_of(i)];
+  }
+  // each quad asks for a margin of a thousandth of what a quad of its size
+  // gets from a quadratic along its own diagonal
+  for(Cocircular_quad& q : quads)
+  {
+    const std::array<double, 3> a = coords(q.v[0]), c = coords(q.v[1]);
+    const double d2 = (c[0] - a[0]) * (c[0] - a[0]) + (c[1] - a[1]) * (c[1] - a[1]) + (c[2] - a[2]) * (c[2] - a[2]);
+    q.margin = 1e-3 * d2 / extent2[set_of(q.v[0])];
   }
 
   // the quads the quadratic does not serve: projections onto their
