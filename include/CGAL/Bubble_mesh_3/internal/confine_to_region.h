@@ -500,16 +500,8 @@ private:
             if(d2 <= reach * reach) entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
           }
     }
-    std::sort(entries.begin(), entries.end());
     std::unordered_map<std::uint64_t, Cell> cells;
-    ball_index_.resize(entries.size());
-    for(std::size_t e = 0; e < entries.size(); ++e)
-    {
-      ball_index_[e] = entries[e].second;
-      Cell_range& range = cells[entries[e].first].balls;
-      if(e == 0 || entries[e].first != entries[e - 1].first) range = Cell_range(std::uint32_t(e), std::uint32_t(e));
-      ++range.second;
-    }
+    fill_cell_lists(entries, ball_index_, cells, &Cell::balls);
     // the triangles' pad is a whole cell: distances are exact as far as with the coarser cells
     build_face_lists(h, cells);
     // an open-addressing table: a look-up is a multiplication and a probe or two
@@ -602,12 +594,21 @@ private:
             entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
           }
     }
+    fill_cell_lists(entries, face_index_, cells, &Cell::faces);
+  }
+
+  // (cell key, item) pairs become `index`, the items sorted by cell, and in
+  // each cell the range of its items there (the member `list` of Cell)
+  static void fill_cell_lists(std::vector<std::pair<std::uint64_t, std::uint32_t> >& entries,
+                              std::vector<std::uint32_t>& index, std::unordered_map<std::uint64_t, Cell>& cells,
+                              Cell_range Cell::*list)
+  {
     std::sort(entries.begin(), entries.end());
-    face_index_.resize(entries.size());
+    index.resize(entries.size());
     for(std::size_t e = 0; e < entries.size(); ++e)
     {
-      face_index_[e] = entries[e].second;
-      Cell_range& range = cells[entries[e].first].faces;
+      index[e] = entries[e].second;
+      Cell_range& range = cells[entries[e].first].*list;
       if(e == 0 || entries[e].first != entries[e - 1].first) range = Cell_range(std::uint32_t(e), std::uint32_t(e));
       ++range.second;
     }
