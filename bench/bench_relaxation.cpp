@@ -49,7 +49,7 @@ typedef BM::Bubble<K> Bubble;
 namespace {
 
 const char* usage =
-  "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST]\n"
+  "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin S]\n"
   "       bench_relaxation alpha [MODEL ...] [--threads N]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
@@ -61,7 +61,8 @@ const char* usage =
   "            first steps of a crowded start cost more confinement work; wall clock\n"
   "            as the visitor sees it), over the whole call (set-up included), and\n"
   "            the process CPU time of the call; the result must be the same for every\n"
-  "            thread count (checked).\n"
+  "            thread count (checked), and the neighbour-list rebuilds. --skin sets\n"
+  "            relax_bubbles()'s neighbor_skin (default 0.15, its own default).\n"
   "alpha       for each MODEL (default: the bundled layered_model.obj and every .ml in\n"
   "            ../shared/data/geomodels next to the checkout): surface bubbles, placement\n"
   "            and relax_bubbles() with default parameters on N threads (default 1);\n"
@@ -131,7 +132,8 @@ bool read_model(const std::string& path, Model& m)
   }
 }
 
-int throughput(double edge_length, std::size_t steps, std::size_t warmup, const std::vector<std::size_t>& thread_counts)
+int throughput(double edge_length, std::size_t steps, std::size_t warmup, const std::vector<std::size_t>& thread_counts,
+               double skin)
 {
   Model m;
   BM::Layered_model_parameters lp;
@@ -162,7 +164,8 @@ int throughput(double edge_length, std::size_t steps, std::size_t warmup, const 
       params::number_of_threads(
         threads, params::number_of_population_rounds(
                    0, params::number_of_relaxation_steps(
-                        steps, params::displacement_tolerance(0., params::visitor(std::ref(clock)))))));
+                        steps, params::displacement_tolerance(
+                                 0., params::neighbor_skin(skin, params::visitor(std::ref(clock))))))));
     const double cpu = cpu_seconds() - c0;
     const double step_wall = clock.last - clock.first;
     const double rate = clock.timed_bubble_steps / step_wall;
@@ -173,7 +176,8 @@ int throughput(double edge_length, std::size_t steps, std::size_t warmup, const 
               << std::setprecision(0) << rate << " bubble-steps/s (" << rate / double(threads) << " per thread)"
               << std::setprecision(3) << "; whole call " << rep.seconds << " s wall, " << cpu << " s CPU -> "
               << std::setprecision(0) << rep.bubble_steps / rep.seconds << " bubble-steps/s wall, "
-              << rep.bubble_steps / cpu << " per CPU second" << std::setprecision(2);
+              << rep.bubble_steps / cpu << " per CPU second; " << rep.list_rebuilds << " list rebuilds"
+              << std::setprecision(2);
     if(threads != thread_counts.front()) std::cout << "; speed-up " << rate / one_thread;
     std::cout << "; load before: " << load << std::endl;
     if(first_result.empty()) first_result = interior;
@@ -293,6 +297,7 @@ int main(int argc, char** argv)
   const bool alpha = std::strcmp(argv[1], "alpha") == 0;
   double edge_length = 12.;
   std::size_t steps = 100, warmup = 20;
+  double skin = 0.15; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
   for(int i = 2; i < argc; ++i)
@@ -302,6 +307,7 @@ int main(int argc, char** argv)
     if(a == "--edge-length" && has_value) edge_length = std::atof(argv[++i]);
     else if(a == "--steps" && has_value) steps = std::size_t(std::atol(argv[++i]));
     else if(a == "--warmup" && has_value) warmup = std::size_t(std::atol(argv[++i]));
+    else if(a == "--skin" && has_value) skin = std::atof(argv[++i]);
     else if(a == "--threads" && has_value)
     {
       threads.clear();
@@ -324,7 +330,7 @@ int main(int argc, char** argv)
   std::cout << "command:";
   for(int i = 0; i < argc; ++i) std::cout << " " << argv[i];
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
-  if(!alpha) return throughput(edge_length, steps, warmup, threads);
+  if(!alpha) return throughput(edge_length, steps, warmup, threads, skin);
   if(models.empty()) models = default_models(argv[0]);
   return alpha_table(models, threads.front());
 }

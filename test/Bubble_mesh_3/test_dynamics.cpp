@@ -141,17 +141,26 @@ static void test_two_bubbles()
 
 // -- 3. a simple cubic lattice whose outer layer is the cube's surface: every free
 // bubble sees a complete, symmetric neighbourhood, so no force and no motion
+// the free nodes of the lattice of spacing L/n in the cube [0,L]^3 whose outer layer is
+// make_cube(L, n)'s points, as bubbles of radius L/(2n) in region 1 (index (i*(n-1) + j)*(n-1) + k)
+static std::vector<Bubble> lattice_bubbles(double L, int n)
+{
+  const double d = L / n;
+  std::vector<Bubble> out;
+  for(int i = 1; i < n; ++i)
+    for(int j = 1; j < n; ++j)
+      for(int k = 1; k < n; ++k)
+        out.push_back(Bubble(Point_3(i * d, j * d, k * d), 0.5 * d, 1, BM::no_index, false));
+  return out;
+}
+
 static void test_lattice_at_rest()
 {
   const int n = 8;
   const double L = 1., d = L / n, r = 0.5 * d;
   const Model cube = make_cube(L, n);
   const std::vector<Bubble> surface = fixed_bubbles(cube, r);
-  std::vector<Bubble> interior;
-  for(int i = 1; i < n; ++i)
-    for(int j = 1; j < n; ++j)
-      for(int k = 1; k < n; ++k)
-        interior.push_back(Bubble(Point_3(i * d, j * d, k * d), r, 1, BM::no_index, false));
+  std::vector<Bubble> interior = lattice_bubbles(L, n);
   const std::vector<Bubble> before = interior;
   double peak = 0.;
   std::size_t calls = 0;
@@ -174,6 +183,54 @@ static void test_lattice_at_rest()
   assert(rep.steps == 50);
   assert(moved < 1e-12 * r);
   assert(peak < 1e-12 && calls > 50);
+}
+
+// -- 3b. a few bubbles knocked out of a lattice at rest move farther than the
+// neighbour lists' skin while the rest barely moves: their pairs are then taken
+// from the grid ("strays"), not from rebuilt lists. The motion must be the one
+// computed with lists so wide that they never go stale (up to round-off).
+static void test_strays()
+{
+  const int n = 8;
+  const double L = 1., d = L / n, r = 0.5 * d;
+  const Model cube = make_cube(L, n);
+  const std::vector<Bubble> surface = fixed_bubbles(cube, r);
+  std::vector<Bubble> start = lattice_bubbles(L, n);
+  // three bubbles far apart pushed 0.4 r towards a neighbour
+  const std::size_t knocked[3] = {std::size_t((2 * 7 + 2) * 7 + 2), std::size_t((4 * 7 + 3) * 7 + 4),
+                                  std::size_t((5 * 7 + 5) * 7 + 1)};
+  const double push[3][3] = {{0.4, 0., 0.}, {0., 0.4, 0.}, {0.25, 0.25, 0.2}};
+  for(int t = 0; t < 3; ++t)
+  {
+    const Point_3& c = start[knocked[t]].center;
+    start[knocked[t]].center = Point_3(c.x() + push[t][0] * r, c.y() + push[t][1] * r, c.z() + push[t][2] * r);
+  }
+  std::vector<Bubble> result[2];
+  std::size_t rebuilds[2] = {0, 0};
+  const double skins[2] = {0.15, 3.};
+  for(int run = 0; run < 2; ++run)
+  {
+    result[run] = start;
+    const BM::Relaxation_report rep = BM::relax_bubbles(
+      cube, surface, result[run], Constant_sizing{r},
+      params::number_of_population_rounds(
+        0, params::displacement_tolerance(
+             0., params::number_of_relaxation_steps(12, params::neighbor_skin(skins[run])))));
+    assert(rep.steps == 12 && result[run].size() == start.size());
+    rebuilds[run] = rep.list_rebuilds;
+  }
+  double strayed = 0., differ = 0.;
+  for(std::size_t i = 0; i < start.size(); ++i)
+  {
+    strayed = (std::max)(strayed, dist(result[0][i], start[i]));
+    differ = (std::max)(differ, dist(result[0][i], result[1][i]));
+  }
+  std::cout << "strays: largest move " << strayed / r << " r (skin 0.15 r), list rebuilds " << rebuilds[0]
+            << " (skin 3 r: " << rebuilds[1] << "), largest difference to the wide lists " << differ / r << " r"
+            << std::endl;
+  assert(strayed > 0.15 * r);            // some bubbles left their lists' skin
+  assert(rebuilds[0] == 1 && rebuilds[1] == 1); // ... and no list was rebuilt for them
+  assert(differ < 1e-9 * r);
 }
 
 // a deterministic cloud of `count` points in [m, L-m]^3
@@ -349,6 +406,7 @@ int main()
   test_force_law();
   test_two_bubbles();
   test_lattice_at_rest();
+  test_strays();
   std::vector<Bubble> one, two;
   test_cloud(one, two);
   // -- 5. bit-identical with 1 and 2 threads

@@ -63,6 +63,7 @@ struct Region_relaxation_report
   std::size_t surface_bubbles = 0;    ///< fixed bubbles on the region's surfaces
   std::size_t steps = 0;              ///< integration steps, all rounds
   double bubble_steps = 0.;           ///< sum over steps of the interior population
+  std::size_t list_rebuilds = 0;      ///< rebuilds of the neighbour lists, all rounds
   std::size_t rounds = 0;             ///< population rounds done
   std::size_t added = 0;              ///< inserted by population control
   std::size_t removed = 0;            ///< deleted by population control
@@ -93,6 +94,7 @@ struct Relaxation_report
   std::vector<Region_relaxation_report> regions;
   std::size_t steps = 0;          ///< sum over regions
   double bubble_steps = 0.;       ///< sum over regions
+  std::size_t list_rebuilds = 0;  ///< sum over regions
   /// sums over regions of the fields of `Region_relaxation_report` with these names
   ///@{
   std::size_t population = 0, added = 0, removed = 0, rejected = 0;
@@ -149,9 +151,15 @@ Heun's predictor-corrector (explicit Euler predictor, trapezoidal corrector):
   a0 = (F(x) - c v)/m,  x* = x + dt v,  v* = v + dt a0,
   a1 = (F(x*) - c v*)/m,  x' = x + dt (v + v*)/2,  v' = v + dt (a0 + a1)/2.
 F is summed over Verlet neighbour lists (pairs closer than (cutoff + skin)
-times the sum of radii at the last rebuild), rebuilt when a bubble has moved,
-or its radius grown, by more than the skin can absorb. Each bubble sums its
-own list in a fixed order, so forces do not depend on the thread count.
+times the sum of radii at the last rebuild). A bubble that has moved, or
+grown, by more than the skin can absorb is a stray: its list no longer holds
+every neighbour, nor do the others' lists hold it. A few bubbles pressed on a
+wall or a protected ball stray while the rest has nearly settled, so rather
+than rebuilding every list for them, the strays' pairs are found in the grid
+of the last rebuild and added after the lists' sums, in stray order; the
+lists are rebuilt once the strays are more than a small share of the bubbles.
+Each bubble sums its own list in a fixed order, then the strays' pairs in
+increasing index order, so forces do not depend on the thread count.
 */
 template <class ConcurrencyTag, class K, class ForceLaw, class SizingField>
 class Relaxer
@@ -204,7 +212,7 @@ public:
         pvz_[i] = s_.vz[i] + dt * (f0z_[i] - c * s_.vz[i]) * inv_m;
       }
     });
-    if(!lists_valid(px_.data(), py_.data(), pz_.data())) rebuild_lists();
+    update_lists(px_.data(), py_.data(), pz_.data());
     forces(px_.data(), py_.data(), pz_.data(), f1x_.data(), f1y_.data(), f1z_.data());
     // corrector, confinement, radii
     const Region_confinement<K>& conf = *s_.confinement;
@@ -275,7 +283,7 @@ public:
     });
     const std::pair<double, double> sm =
       deterministic_sum_and_max<ConcurrencyTag>(n, [&](std::size_t i) { return std::make_pair(ke_[i], disp_[i]); });
-    if(!lists_valid(s_.x.data(), s_.y.data(), s_.z.data())) rebuild_lists();
+    update_lists(s_.x.data(), s_.y.data(), s_.z.data());
     forces(s_.x.data(), s_.y.data(), s_.z.data(), f0x_.data(), f0y_.data(), f0z_.data());
     // Radii are held once the motion is small: where the sizing field jumps (a
     // surface bubble entering or leaving the weight-point range) a bubble moving
@@ -288,58 +296,115 @@ public:
   }
 
 private:
+  // the pair force on a bubble at (dx, dy, dz) = x_i - x_j from j, over the distance, with
+  // s = r_i + r_j, added to f; `sign` parts coincident centres reproducibly (by index)
+  void add_pair(double dx, double dy, double dz, double sum, double sign, double& fx, double& fy, double& fz) const
+  {
+    const double d2 = dx * dx + dy * dy + dz * dz, cut = law_.cutoff() * sum;
+    // out of reach: no division, no square root (the lists are short, so this is rare)
+    if(d2 >= cut * cut) return;
+    if(d2 > 1e-24 * sum * sum)
+    {
+      const double l = std::sqrt(d2);
+      // f(w) (r_i + r_j) / l, the pair force over the distance
+      const double mag = law_(l / sum) * sum / l;
+      fx += mag * dx; fy += mag * dy; fz += mag * dz;
+    }
+    else
+      fx += sign * law_(0.) * sum;
+  }
+
   void forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ) const
   {
-    const double cutoff = law_.cutoff();
     const double* R = s_.r.data();
     const std::uint32_t* nb = nbr_.data();
     const std::size_t* off = offset_.data();
+    const unsigned char* stray = is_stray_.data();
+    const bool strays = !strays_.empty();
     for_each_block<ConcurrencyTag>(s_.n_free, 256, [&](std::size_t b, std::size_t e) {
       for(std::size_t i = b; i < e; ++i)
       {
         const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
         double fx = 0., fy = 0., fz = 0.;
-        for(std::size_t k = off[i]; k < off[i + 1]; ++k)
-        {
-          const std::size_t j = nb[k];
-          const double dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
-          const double sum = ri + R[j], cut = cutoff * sum;
-          const double d2 = dx * dx + dy * dy + dz * dz;
-          // out of reach: no division, no square root (the lists are short, so this is rare)
-          if(d2 >= cut * cut) continue;
-          if(d2 > 1e-24 * sum * sum)
+        if(!strays)
+          for(std::size_t k = off[i]; k < off[i + 1]; ++k)
           {
-            const double l = std::sqrt(d2);
-            // f(w) (r_i + r_j) / l, the pair force over the distance
-            const double mag = law_(l / sum) * sum / l;
-            fx += mag * dx; fy += mag * dy; fz += mag * dz;
+            const std::size_t j = nb[k];
+            // coincident centres: part them along x, by index
+            add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., fx, fy, fz);
           }
-          else
-            // coincident centres: part them along x, by index, so that the result is reproducible
-            fx += (i < j ? -1. : 1.) * law_(0.) * sum;
-        }
+        else if(!stray[i])
+          for(std::size_t k = off[i]; k < off[i + 1]; ++k)
+          {
+            const std::size_t j = nb[k];
+            if(!stray[j]) add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., fx, fy, fz);
+          }
         FX[i] = fx; FY[i] = fy; FZ[i] = fz;
       }
     });
+    if(strays) add_stray_forces(X, Y, Z, FX, FY, FZ);
   }
 
-  // still valid while each bubble moved, plus cutoff times its radius growth, less than skin times its radius
-  bool lists_valid(const double* X, const double* Y, const double* Z) const
+  // the pairs of the strays, in increasing stray order: with the others from the grid
+  // of the last rebuild, then among themselves
+  void add_stray_forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ) const
+  {
+    const double* R = s_.r.data();
+    const std::size_t n = s_.n_free;
+    // a bubble that is no stray has moved, plus cutoff times its growth, less than
+    // skin times its radius at the rebuild: it is filed near enough
+    const double cutoff = law_.cutoff(), b = cutoff + st_.skin;
+    for(std::uint32_t i : strays_)
+    {
+      const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
+      grid_.for_each_near_packed(xi, yi, zi, cutoff * ri, b, [&](std::size_t j, const double*) {
+        if(j == i || is_stray_[j]) return;
+        double fx = 0., fy = 0., fz = 0.;
+        add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., fx, fy, fz);
+        FX[i] += fx; FY[i] += fy; FZ[i] += fz;
+        if(j < n) { FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz; }
+      });
+    }
+    for(std::size_t a = 0; a < strays_.size(); ++a)
+      for(std::size_t c = a + 1; c < strays_.size(); ++c)
+      {
+        const std::size_t i = strays_[a], j = strays_[c];
+        double fx = 0., fy = 0., fz = 0.;
+        add_pair(X[i] - X[j], Y[i] - Y[j], Z[i] - Z[j], R[i] + R[j], -1., fx, fy, fz);
+        FX[i] += fx; FY[i] += fy; FZ[i] += fz;
+        FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz;
+      }
+  }
+
+  // the strays at positions (X, Y, Z): bubbles that moved, plus cutoff times their
+  // radius growth, at least skin times their radius since the last rebuild; the
+  // lists are rebuilt when they are too many
+  void update_lists(const double* X, const double* Y, const double* Z)
   {
     const double cutoff = law_.cutoff();
-    const std::pair<double, double> sm = deterministic_sum_and_max<ConcurrencyTag>(s_.n_free, [&](std::size_t i) {
-      const double dx = X[i] - rx_[i], dy = Y[i] - ry_[i], dz = Z[i] - rz_[i];
-      const double grow = (std::max)(0., s_.r[i] - rr_[i]);
-      const double slack = std::sqrt(dx * dx + dy * dy + dz * dz) + cutoff * grow;
-      return std::make_pair(0., slack / (st_.skin * rr_[i]));
+    const std::size_t n = s_.n_free;
+    for_each_block<ConcurrencyTag>(n, 4096, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
+      {
+        const double dx = X[i] - rx_[i], dy = Y[i] - ry_[i], dz = Z[i] - rz_[i];
+        const double grow = (std::max)(0., s_.r[i] - rr_[i]);
+        const double slack = std::sqrt(dx * dx + dy * dy + dz * dz) + cutoff * grow;
+        is_stray_[i] = !(slack < st_.skin * rr_[i]);
+      }
     });
-    return sm.second < 1.;
+    strays_.clear();
+    for(std::size_t i = 0; i < n; ++i)
+      if(is_stray_[i]) strays_.push_back(std::uint32_t(i));
+    // a stray costs a grid query per force evaluation, a rebuild one per bubble
+    if(strays_.size() > n / 64 + 8) rebuild_lists();
   }
 
   void rebuild_lists()
   {
     ++rebuilds_;
     const std::size_t n = s_.n_free;
+    strays_.clear();
+    is_stray_.assign(s_.size(), 0);
     const double reach = law_.cutoff() + st_.skin;
     grid_.build(s_.x.data(), s_.y.data(), s_.z.data(), s_.r.data(), s_.size(), s_.box, reach, true);
     rx_.assign(s_.x.begin(), s_.x.begin() + n);
@@ -352,6 +417,9 @@ private:
     if(lists.size() < nb) lists.resize(nb);
     std::vector<std::size_t>& counts = counts_;
     counts.assign(n, 0);
+    inv_mass_.resize(n);
+    damping_.resize(n);
+    const double cutoff = law_.cutoff();
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
       for(std::size_t bk = b0; bk < b1; ++bk)
       {
@@ -361,13 +429,17 @@ private:
         {
           const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
           const std::size_t before = out.size();
+          double stiff = 0.;
           grid_.for_each_near_packed(xi, yi, zi, reach * ri, reach, [&](std::size_t j, const double* q) {
             if(j == i) return;
             const double dx = q[0] - xi, dy = q[1] - yi, dz = q[2] - zi;
-            const double lim = reach * (ri + q[3]);
-            if(dx * dx + dy * dy + dz * dz < lim * lim) out.push_back(std::uint32_t(j));
+            const double d2 = dx * dx + dy * dy + dz * dz, sum = ri + q[3], lim = reach * sum, cut = cutoff * sum;
+            if(!(d2 < lim * lim)) return;
+            out.push_back(std::uint32_t(j));
+            if(d2 < cut * cut) stiff += pair_stiffness(std::sqrt(d2) / sum);
           });
           counts[i] = out.size() - before;
+          scale_mass(i, stiff);
         }
       }
     });
@@ -379,7 +451,6 @@ private:
         if(!lists[bk].empty() && bk * block < n)
           std::copy(lists[bk].begin(), lists[bk].end(), nbr_.begin() + offset_[bk * block]);
     });
-    scale_masses();
   }
 
   /*
@@ -390,33 +461,23 @@ private:
   crowded that dt * omega would pass `stability` gets a heavier mass, and a
   damping grown with sqrt(m_i) (same damping ratio). Rest states are the
   same; only crowded transients are slowed. In a packing at rest S_i is about
-  17k, and with the default step no bubble is scaled.
+  17k, and with the default step no bubble is scaled. S_i is summed while the
+  lists are built (pairs closer than the cutoff, in list order).
   */
-  void scale_masses()
+  // the pair stiffness: the larger of |f'(w)| (central differences: any law) and f(w)/w
+  double pair_stiffness(double w) const
   {
-    const std::size_t n = s_.n_free;
-    inv_mass_.resize(n);
-    damping_.resize(n);
-    const double cutoff = law_.cutoff(), h = 1e-4, stability = 0.8;
-    const double dt2 = st_.time_step * st_.time_step;
-    for_each_block<ConcurrencyTag>(n, 256, [&](std::size_t b, std::size_t e) {
-      for(std::size_t i = b; i < e; ++i)
-      {
-        double stiff = 0.;
-        for(std::size_t k = offset_[i]; k < offset_[i + 1]; ++k)
-        {
-          const std::size_t j = nbr_[k];
-          const double dx = s_.x[i] - s_.x[j], dy = s_.y[i] - s_.y[j], dz = s_.z[i] - s_.z[j];
-          const double w = std::sqrt(dx * dx + dy * dy + dz * dz) / (s_.r[i] + s_.r[j]);
-          if(w >= cutoff) continue;
-          const double slope = std::abs(law_(w + h) - law_((std::max)(0., w - h))) / (w + h - (std::max)(0., w - h));
-          stiff += (std::max)(slope, w > h ? std::abs(law_(w)) / w : std::abs(law_(h)) / h);
-        }
-        const double m = (std::max)(st_.mass, 2. * stiff * dt2 / (stability * stability));
-        inv_mass_[i] = 1. / m;
-        damping_[i] = st_.damping * std::sqrt(m / st_.mass);
-      }
-    });
+    const double h = 1e-4, lo = (std::max)(0., w - h);
+    const double slope = std::abs(law_(w + h) - law_(lo)) / (w + h - lo);
+    return (std::max)(slope, w > h ? std::abs(law_(w)) / w : std::abs(law_(h)) / h);
+  }
+
+  void scale_mass(std::size_t i, double stiffness)
+  {
+    const double stability = 0.8, dt2 = st_.time_step * st_.time_step;
+    const double m = (std::max)(st_.mass, 2. * stiffness * dt2 / (stability * stability));
+    inv_mass_[i] = 1. / m;
+    damping_[i] = st_.damping * std::sqrt(m / st_.mass);
   }
 
   Bubble_system<K>& s_;
@@ -431,6 +492,8 @@ private:
   std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> nbr_;
+  std::vector<std::uint32_t> strays_;                    // free bubbles beyond their lists' skin, increasing
+  std::vector<unsigned char> is_stray_;                  // per bubble (fixed ones never stray)
   std::vector<std::vector<std::uint32_t> > lists_;       // rebuild_lists()'s work space
   std::vector<std::size_t> counts_;
   std::size_t rebuilds_ = 0;
@@ -509,6 +572,7 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
       if(f.max_displacement < tolerance) { rep.converged = true; break; }
     }
     if(s.n_free == 0) rep.converged = true;
+    rep.list_rebuilds = relaxer.list_rebuilds();
     p.end_of_round = true;
     if(!rep.interrupted && !visitor(p)) rep.interrupted = true;
   };
@@ -664,8 +728,12 @@ confinement run in parallel. Every bubble sums its forces over its own
 neighbour list in a fixed order, and sums and maxima over bubbles are taken
 over fixed blocks combined in order, so the result is bit-identical whatever
 the number of threads. Neighbours are found with Verlet lists (pairs within
-`(cutoff + neighbor_skin)(r_i + r_j)`, rebuilt when a bubble has moved, or
-grown, more than the skin allows) filled from uniform grids.
+`(cutoff + neighbor_skin)(r_i + r_j)`) filled from uniform grids. A bubble
+that has moved, or grown, more than the skin allows finds its pairs in the
+grid instead, after the lists' sums and in index order, until such bubbles
+are more than 1/64 of the region's; then the lists are rebuilt. A few
+bubbles pressed on a wall keep moving after the rest has settled, and would
+otherwise force a rebuild at almost every step.
 
 The output is grouped by region (increasing index); in a region, the
 surviving input bubbles keep their order and new bubbles follow. Interior
@@ -815,6 +883,7 @@ Relaxation_report relax_bubbles(const Geological_model_3<K>& model, const std::v
   {
     report.steps += r.steps;
     report.bubble_steps += r.bubble_steps;
+    report.list_rebuilds += r.list_rebuilds;
     report.population += r.population;
     report.added += r.added;
     report.removed += r.removed;
