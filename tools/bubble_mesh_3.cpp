@@ -26,9 +26,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <unistd.h>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -220,8 +222,30 @@ int main(int argc, char** argv)
   CGAL::Real_timer stage_timer;
   try
   {
+    // Relaxation is the longest stage and can take minutes: a progress line, rewritten
+    // in place on a terminal (a few times a second), a line every 30 s in a log.
+    const bool terminal = isatty(fileno(stdout)) != 0;
+    double last_line = -1e30;
+    bool open_line = false;
+    std::size_t width = 0;
+    auto relaxation_progress = [&](const BM::Relaxation_progress& p) {
+      const double now = stage_timer.time();
+      if(opt.quiet || now - last_line < (terminal ? 0.25 : 30.)) return;
+      last_line = now;
+      std::ostringstream line;
+      line << "  region " << p.region << ", round " << p.round << ", step " << p.step << ": " << p.population
+           << " bubbles (+" << p.added << " -" << p.removed << "), largest move " << std::setprecision(2)
+           << p.max_displacement << " r, " << std::fixed << std::setprecision(0) << now << " s";
+      std::string text = line.str();
+      // on a terminal, blank what is left of a longer previous line
+      if(terminal) { width = (std::max)(width, text.size()); text.resize(width, ' '); }
+      std::cout << (terminal ? "\r" : "") << text << (terminal ? "" : "\n") << std::flush;
+      open_line = terminal;
+    };
     auto progress = [&](const std::string& stage) {
       if(opt.quiet) return;
+      if(open_line) std::cout << "\n";
+      open_line = false;
       std::cout << "[" << std::fixed << std::setprecision(1) << stage_timer.time() << " s] " << stage << "...\n"
                 << std::defaultfloat << std::flush;
     };
@@ -231,7 +255,7 @@ int main(int argc, char** argv)
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,
                     BM::parameters::sliver_bound(opt.sliver_bound,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
-                    CGAL::parameters::random_seed(opt.seed))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))));
     // the size is a named parameter only when given: its absence selects the default
     if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, np));
     else if(opt.relative_size > 0.)
