@@ -322,7 +322,7 @@ int main(int argc, char** argv)
     }
     else models.push_back(a);
   }
-  if(threads.empty() || !(edge_length > 0.) || warmup == 0 || warmup >= steps)
+  if(threads.empty() || !(edge_length > 0.) || !(skin > 0.) || warmup == 0 || warmup >= steps)
   {
     std::cerr << usage;
     return 2;

@@ -395,8 +395,9 @@ private:
     strays_.clear();
     for(std::size_t i = 0; i < n; ++i)
       if(is_stray_[i]) strays_.push_back(std::uint32_t(i));
-    // a stray costs a grid query per force evaluation, a rebuild one per bubble
-    if(strays_.size() > n / 64 + 8) rebuild_lists();
+    // a stray costs a grid query per force evaluation, a rebuild one per bubble; and the
+    // strays' pairs among themselves cost |strays|^2 / 2, hence a fixed cap on large regions
+    if(strays_.size() > (std::min)(n / 64 + 8, std::size_t(512))) rebuild_lists();
   }
 
   void rebuild_lists()
@@ -731,7 +732,7 @@ the number of threads. Neighbours are found with Verlet lists (pairs within
 `(cutoff + neighbor_skin)(r_i + r_j)`) filled from uniform grids. A bubble
 that has moved, or grown, more than the skin allows finds its pairs in the
 grid instead, after the lists' sums and in index order, until such bubbles
-are more than 1/64 of the region's; then the lists are rebuilt. A few
+are more than 1/64 of the region's (or 512); then the lists are rebuilt. A few
 bubbles pressed on a wall keep moving after the rest has settled, and would
 otherwise force a rebuild at almost every step.
 
