@@ -141,8 +141,8 @@ static void test_surface_bubbles()
   const std::vector<Bubble> sb = BM::place_surface_bubbles(tet);
   assert(sb.size() == 4);
   // vertex 0: three edges of length 1 -> r = 0.5 * 1
-  // vertex 1: edges 1, sqrt2, sqrt2   -> r = 0.5 * (1 + 2 sqrt2) / 3 = 0.63807
-  const double r1 = 0.5 * (1. + 2. * std::sqrt(2.)) / 3.;
+  // vertex 1: edges 1, sqrt2, sqrt2   -> r = 0.5 * median = 0.5 sqrt2 (the mean would give 0.638)
+  const double r1 = 0.5 * std::sqrt(2.);
   std::cout << "surface bubbles of the unit tetrahedron: r0 = " << sb[0].radius << " (expected 0.5), r1 = "
             << sb[1].radius << " (expected " << r1 << ")\n";
   assert(close(sb[0].radius, 0.5, 1e-12) && close(sb[1].radius, r1, 1e-12));
@@ -153,12 +153,13 @@ static void test_surface_bubbles()
   assert(close(sb2[1].radius, 2. * r1, 1e-12));
 
   // shared edges count once: on the box, an inner vertex of a face grid of
-  // step 0.5 has 6 edges: 4 of length 0.5 and 2 diagonals 0.5 sqrt2
+  // step 0.5 has 6 edges: 4 of length 0.5 and 2 diagonals 0.5 sqrt2, median
+  // 0.5 (counted twice, the diagonals would make it 0.5 (1 + sqrt2) / 2)
   const Model box = make_two_layer_box();
   const std::vector<Bubble> bb = BM::place_surface_bubbles(box);
   assert(bb.size() == box.number_of_points());
   std::size_t checked = 0;
-  const double inner = 0.5 * (4 * 0.5 + 2 * 0.5 * std::sqrt(2.)) / 6.;
+  const double inner = 0.5 * 0.5;
   for(const Bubble& b : bb)
     if(b.center.z() == 0 && b.center.x() > 0.1 && b.center.x() < 9.9 && b.center.y() > 0.1 && b.center.y() < 5.9)
     {
@@ -321,6 +322,24 @@ static void test_radius_rule()
   assert(close(scaled(p, 1), 2. * expected, 1e-12));
   assert(idw.default_radius(1) == 0.25 && idw.smallest_surface_radius(1) == 0.1);
   assert(idw(p, 0) == 0. && idw(p, 7) == 0.); // no surface bubbles / no such region
+
+  // Gradation. Radii 0.01, 10, 10, 10: R0 = 5.005,
+  // all four are weight points of p; inverse distance gives
+  // R = (0.01 / l_0 + 30 / l_1) / (1 / l_0 + 3 / l_1) = 5.5, but the radius may
+  // grow only 0.5 per unit of distance from bubble 0: 0.01 + 0.5 l_0 = 0.1832.
+  sb[0].radius = 0.01;
+  for(std::size_t i = 1; i < 4; ++i) sb[i].radius = 10.;
+  const double l0 = std::sqrt(0.12), l1 = std::sqrt(0.72);
+  const double interpolated = (0.01 / l0 + 30. / l1) / (1. / l0 + 3. / l1);
+  const BM::Surface_bubble_sizing_field<K> graded(tet, sb);
+  const BM::Surface_bubble_sizing_field<K> ungraded(tet, sb, BMP::size_gradation(0.));
+  const BM::Surface_bubble_sizing_field<K> steep(tet, sb, BMP::size_gradation(2.));
+  std::cout << "gradation: " << ungraded(p, 1) << " (" << interpolated << ") ungraded, " << graded(p, 1) << " ("
+            << 0.01 + 0.5 * l0 << ") at 0.5, " << steep(p, 1) << " at 2\n";
+  assert(close(ungraded(p, 1), interpolated, 1e-12));
+  assert(close(graded(p, 1), 0.01 + 0.5 * l0, 1e-12));
+  assert(close(steep(p, 1), 0.01 + 2. * l0, 1e-12));
+  assert(close(graded(Point_3(1, 0, 0), 1), 10., 1e-12)); // a surface bubble's own radius stays
 }
 
 // Smallest (distance to the nearest model triangle) / radius over the bubbles:

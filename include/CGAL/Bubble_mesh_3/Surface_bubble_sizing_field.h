@@ -13,6 +13,7 @@
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Orthogonal_incremental_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/property_map.h>
@@ -35,13 +36,15 @@ The default model of `BubbleSizingField`: the radius wanted at a point of a
 region, interpolated from the surface bubbles of that region by the
 weight-point rule of METHOD.md (stage 2), times a per-region scale factor.
 
-For region `r`, let `r_min`, `r_max` be the smallest and largest radii of the
-surface bubbles on `r`'s boundary or on surfaces inside `r`, and
-`R0 = (r_max + r_min) / 2`. A surface bubble `j` of `r` is a weight point of
-`p` when `l_j = |p - c_j| < f (R0 + r_j)` (`f` = `interaction_range_factor`,
-1.5). With weight points `j = 1..n`:
+For region `r`, let `r_min`, `r_max` be the 5 % and 95 % quantiles of the
+radii of the surface bubbles on `r`'s boundary or on surfaces inside `r`
+(the paper takes the extremes; a box face given as two triangles would make
+them meaningless), and `R0 = (r_max + r_min) / 2`. A surface bubble `j` of
+`r` is a weight point of `p` when `l_j = |p - c_j| < f (R0 + r_j)`
+(`f` = `interaction_range_factor`, 1.5). With weight points `j = 1..n`:
 
-    R(p) = s_r * sum_j lambda_j r_j,   lambda_j = w_j / sum_k w_k,
+    R(p) = s_r * min( sum_j lambda_j r_j,  min_i (r_i + g l_i) ),
+    lambda_j = w_j / sum_k w_k,
 
 with `w_j = 1 / l_j` (`Radius_weighting::INVERSE_DISTANCE`, default: the
 closer, the heavier) or `w_j = 1 / r_j` (`Radius_weighting::INVERSE_RADIUS`,
@@ -49,7 +52,12 @@ the paper's printed formula). At a surface bubble's centre (`l_j = 0`) the
 inverse-distance rule gives that bubble's radius. Without weight point,
 `R(p) = s_r * R0`. `s_r` is entry `r` of `region_scale_factors` (1 when
 absent): below 1 asks for a denser mesh in region `r`, above 1 a coarser one,
-without touching its surface.
+without touching its surface. The second term, over all surface bubbles `i`
+of `r`, bounds the growth of the radius away from the surface by `g` per unit
+of distance (`g` = `size_gradation`, 0.5; 0 drops it, as in the paper): the
+few huge bubbles at the corners of coarse triangles (a box's faces) would
+otherwise be interpolated over the whole fine mesh beside them. It and the
+quantiles are deviations from the paper, measured on modelA1 (bench/README.md).
 
 Only surface bubbles whose `surface_point` is a model point are used. Weight
 points are found with a `CGAL::Kd_tree` per region (built in the
@@ -70,7 +78,10 @@ public:
 private:
   typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
   typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<GeomTraits> > Traits;
-  typedef CGAL::Kd_tree<Traits> Tree;
+  typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<CGAL::Search_traits_3<GeomTraits> > >
+    Distance;
+  typedef CGAL::Orthogonal_incremental_neighbor_search<Traits, Distance> Incremental_search;
+  typedef typename Incremental_search::Tree Tree;
   typedef CGAL::Fuzzy_sphere<Traits> Sphere;
 
   struct Region_data
@@ -94,6 +105,11 @@ public:
       \cgalParamType{double}
       \cgalParamDefault{1.5 (the force law's range)}
     \cgalParamNEnd
+    \cgalParamNBegin{size_gradation}
+      \cgalParamDescription{`g`: the radius grows at most `g` per unit of distance from a surface bubble; 0: no bound}
+      \cgalParamType{double}
+      \cgalParamDefault{0.5}
+    \cgalParamNEnd
     \cgalParamNBegin{region_scale_factors}
       \cgalParamDescription{entry `r` multiplies the radius wanted in region `r`}
       \cgalParamType{std::vector<double>}
@@ -111,6 +127,7 @@ public:
     weighting_ = choose_parameter(get_parameter(np, internal_np::radius_weighting),
                                   Radius_weighting::INVERSE_DISTANCE);
     range_factor_ = choose_parameter(get_parameter(np, internal_np::interaction_range_factor), 1.5);
+    gradation_ = choose_parameter(get_parameter(np, internal_np::size_gradation), 0.5);
     scale_ = choose_parameter(get_parameter(np, internal_np::region_scale_factors), std::vector<double>());
 
     // (region, point) incidences, so that each region gets its own bubbles
@@ -146,7 +163,11 @@ public:
       if(rd.radii.empty()) continue;
       rd.r_min = *std::min_element(rd.radii.begin(), rd.radii.end());
       rd.r_max = *std::max_element(rd.radii.begin(), rd.radii.end());
-      rd.r0 = 0.5 * (rd.r_min + rd.r_max);
+      // R0 from the 5 % and 95 % quantiles: see place_initial_bubbles()
+      std::vector<double> sorted = rd.radii;
+      std::sort(sorted.begin(), sorted.end());
+      const std::size_t q = (sorted.size() - 1) / 20;
+      rd.r0 = 0.5 * (sorted[q] + sorted[sorted.size() - 1 - q]);
       std::vector<std::size_t> keys(rd.centres.size());
       for(std::size_t i = 0; i < keys.size(); ++i) keys[i] = i;
       rd.tree.reset(new Tree(keys.begin(), keys.end(), typename Tree::Splitter(),
@@ -212,11 +233,30 @@ private:
       weighted += w * rd.radii[j];
     }
     if(coincident > 0) return coincident_sum / double(coincident);
-    return weight_sum > 0. ? weighted / weight_sum : rd.r0;
+    const double interpolated = weight_sum > 0. ? weighted / weight_sum : rd.r0;
+    return (std::min)(interpolated, graded_bound(rd, p, interpolated));
+  }
+
+  // min_j (r_j + g l_j) over the region's surface bubbles, or `bound` if that
+  // is smaller: the radius grows at most g per unit of distance from a surface
+  // bubble, so that the coarse triangles of a box's faces do not ask for huge
+  // bubbles a few fine-mesh sizes away from a fine surface
+  double graded_bound(const Region_data& rd, const Point_3& p, double bound) const
+  {
+    if(!(gradation_ > 0.)) return bound;
+    Incremental_search search(*rd.tree, p, 0., true, Distance(Point_map(rd.centres.data())));
+    for(auto it = search.begin(); it != search.end(); ++it)
+    {
+      const double l = std::sqrt(CGAL::to_double(it->second));
+      if(!(rd.r_min + gradation_ * l < bound)) break; // no farther bubble can lower it
+      bound = (std::min)(bound, rd.radii[it->first] + gradation_ * l);
+    }
+    return bound;
   }
 
   std::shared_ptr<const std::vector<Region_data> > regions_;
   std::vector<double> scale_;
+  double gradation_ = 0.5;
   double range_factor_ = 1.5;
   Radius_weighting weighting_ = Radius_weighting::INVERSE_DISTANCE;
 };

@@ -221,13 +221,19 @@ void place_region_bubbles(const Geological_model_3<GeomTraits>& model,
   stats.clustering_seconds = timer.time();
 
   // 2. cell edge (r_max + r_min) / 2, radii taken from the sizing field at the
-  // surface bubbles (for the default field: their radii times the region's scale)
-  double s_min = (std::numeric_limits<double>::max)(), s_max = 0.;
-  for(std::size_t b : bubble_ids)
+  // surface bubbles (for the default field: their radii times the region's
+  // scale); the 5 % and 95 % quantiles stand for the extremes, since a few
+  // vertices of huge triangles (a box's top given as two triangles) would
+  // make the lattice as coarse as them, and the whole region nearly empty
+  std::vector<double> sizes;
+  sizes.reserve(bubble_ids.size());
+  for(std::size_t b : bubble_ids) sizes.push_back(sizing(surface_bubbles[b].center, r));
+  double s_min = 0., s_max = 0.;
+  if(!sizes.empty())
   {
-    const double s = sizing(surface_bubbles[b].center, r);
-    s_min = (std::min)(s_min, s);
-    s_max = (std::max)(s_max, s);
+    std::sort(sizes.begin(), sizes.end());
+    s_min = sizes[(sizes.size() - 1) / 20];
+    s_max = sizes[(sizes.size() - 1) - (sizes.size() - 1) / 20];
   }
   const double h = set.cell_edge_factor * 0.5 * (s_min + s_max);
   stats.cell_edge = h;
@@ -314,9 +320,13 @@ For each region `r` (independently, in parallel when TBB is linked):
    [`min_number_of_clusters`, `max_number_of_clusters`] by
    `select_number_of_clusters()`;
 2. the cell edge is `h = cell_edge_factor * (s_max + s_min) / 2`, where
-   `s` is the sizing field at the region's surface bubbles: for the default
-   field these are the surface-bubble radii times the region's scale, so `h`
-   is the paper's `(r_max + r_min) / 2`;
+   `s_min` and `s_max` are the 5 % and 95 % quantiles of the sizing field at
+   the region's surface bubbles: for the default field these are the
+   surface-bubble radii times the region's scale, so `h` is the paper's
+   `(r_max + r_min) / 2` with the extremes taken robustly (a box's top face
+   given as two triangles has corners whose radius is thousands of times the
+   others', and with the true maximum the region would get a handful of
+   bubbles);
 3. the bounding box of every cluster is covered by the cubic cells of one
    lattice of edge `h` anchored at the corner of the region's points; a cell
    that several boxes hold is taken once (by the first cluster);

@@ -47,8 +47,10 @@ std::vector<std::size_t> region_surface_points(const Geological_model_3<GeomTrai
 \ingroup PkgBubbleMesh3Ref
 
 Stage 1 of the method: one fixed bubble on every model point that a triangle
-uses, with radius `surface_radius_factor` times the mean length of the edges
-incident to the point. Every edge counts once, whatever the number of
+uses, with radius `surface_radius_factor` times the median length of the edges
+incident to the point (the paper says mean; the median keeps the one long
+edge of a coarse neighbour from inflating a fine point's bubble, which on
+modelA1 filled the corners of its box with bubbles of 2-4 km). Every edge counts once, whatever the number of
 triangles and patches that share it, so a point on a contact curve sees the
 edges of all the surfaces that meet there. Points no triangle uses get no
 bubble. Bubbles come in increasing point order; `surface_point` is the point
@@ -56,7 +58,7 @@ index, `region` is `no_index`, `is_fixed` is true.
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{surface_radius_factor}
-    \cgalParamDescription{radius over mean incident edge length}
+    \cgalParamDescription{radius over median incident edge length}
     \cgalParamType{double}
     \cgalParamDefault{0.5 (METHOD.md, stage 1)}
   \cgalParamNEnd
@@ -84,21 +86,27 @@ place_surface_bubbles(const Geological_model_3<GeomTraits>& model,
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
   const std::size_t n = model.number_of_points();
-  std::vector<double> length_sum(n, 0.);
-  std::vector<std::size_t> degree(n, 0);
+  std::vector<std::pair<std::size_t, double> > incident; // (point, edge length)
+  incident.reserve(2 * edges.size());
   for(const auto& e : edges)
   {
     const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(model.point(e.first), model.point(e.second))));
-    length_sum[e.first] += l;
-    length_sum[e.second] += l;
-    ++degree[e.first];
-    ++degree[e.second];
+    incident.emplace_back(e.first, l);
+    incident.emplace_back(e.second, l);
   }
+  std::sort(incident.begin(), incident.end());
 
   std::vector<Bubble<GeomTraits> > bubbles;
-  for(std::size_t i = 0; i < n; ++i)
-    if(degree[i] > 0)
-      bubbles.emplace_back(model.point(i), factor * length_sum[i] / double(degree[i]), no_index, i, true);
+  for(std::size_t k = 0; k < incident.size();)
+  {
+    std::size_t end = k;
+    while(end < incident.size() && incident[end].first == incident[k].first) ++end;
+    const std::size_t m = end - k;
+    const double median = (m % 2 == 1) ? incident[k + m / 2].second
+                                       : 0.5 * (incident[k + m / 2 - 1].second + incident[k + m / 2].second);
+    bubbles.emplace_back(model.point(incident[k].first), factor * median, no_index, incident[k].first, true);
+    k = end;
+  }
   return bubbles;
 }
 

@@ -46,6 +46,7 @@ enum cell_edge_factor_t { cell_edge_factor };
 enum surface_clearance_factor_t { surface_clearance_factor };
 enum interaction_range_factor_t { interaction_range_factor };
 enum radius_weighting_t { radius_weighting };
+enum size_gradation_t { size_gradation };
 enum region_scale_factors_t { region_scale_factors };
 enum parallel_regions_t { parallel_regions };
 enum placement_statistics_t { placement_statistics };
@@ -70,7 +71,7 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, convergence_tolerance)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_restarts)
 /// above this many points the silhouette is computed on a seeded subsample of this size (default 2000)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, silhouette_sample_size)
-/// surface bubble radius = factor * mean incident edge length (default 0.5)
+/// surface bubble radius = factor * median incident edge length (default 0.5)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_radius_factor)
 /// cell edge = factor * (r_max + r_min) / 2 (default 1)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, cell_edge_factor)
@@ -80,6 +81,8 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_clearance_factor)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, interaction_range_factor)
 /// weights of the weight-point rule (default `Radius_weighting::INVERSE_DISTANCE`)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Radius_weighting, radius_weighting)
+/// the wanted radius grows at most this much per unit of distance from a surface bubble; 0: no bound (default 0.5)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, size_gradation)
 /// entry r multiplies the wanted radius in region r; missing entries are 1 (default empty)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<double>, region_scale_factors)
 /// process regions (and candidates) with TBB when it is linked (default true); the result does not depend on it
