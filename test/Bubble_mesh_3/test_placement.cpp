@@ -153,8 +153,7 @@ static void test_surface_bubbles()
   assert(close(sb2[1].radius, 2. * r1, 1e-12));
 
   // shared edges count once: on the box, an inner vertex of a face grid of
-  // step 0.5 has 6 edges: 4 of length 0.5 and 2 diagonals 0.5 sqrt2, median
-  // 0.5 (counted twice, the diagonals would make it 0.5 (1 + sqrt2) / 2)
+  // step 0.5 has 6 edges: 4 of length 0.5 and 2 diagonals 0.5 sqrt2, median 0.5
   const Model box = make_two_layer_box();
   const std::vector<Bubble> bb = BM::place_surface_bubbles(box);
   assert(bb.size() == box.number_of_points());

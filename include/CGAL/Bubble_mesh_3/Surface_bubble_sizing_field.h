@@ -36,12 +36,13 @@ The default model of `BubbleSizingField`: the radius wanted at a point of a
 region, interpolated from the surface bubbles of that region by the
 weight-point rule of METHOD.md (stage 2), times a per-region scale factor.
 
-For region `r`, let `r_min`, `r_max` be the 5 % and 95 % quantiles of the
-radii of the surface bubbles on `r`'s boundary or on surfaces inside `r`
-(the paper takes the extremes; a box face given as two triangles would make
-them meaningless), and `R0 = (r_max + r_min) / 2`. A surface bubble `j` of
-`r` is a weight point of `p` when `l_j = |p - c_j| < f (R0 + r_j)`
-(`f` = `interaction_range_factor`, 1.5). With weight points `j = 1..n`:
+For region `r`, let `q_5`, `q_95` be the 5 % and 95 % quantiles of the
+radii of the surface bubbles on `r`'s boundary or on surfaces inside `r`,
+and `R0 = (q_95 + q_5) / 2` (the paper takes the smallest and largest
+radius; a box face given as two triangles would make them meaningless). A
+surface bubble `j` of `r` is a weight point of `p` when
+`l_j = |p - c_j| < f (R0 + r_j)` (`f` = `interaction_range_factor`, 1.5).
+With weight points `j = 1..n`:
 
     R(p) = s_r * min( sum_j lambda_j r_j,  min_i (r_i + g l_i) ),
     lambda_j = w_j / sum_k w_k,
@@ -186,7 +187,7 @@ public:
     return scale_factor(region) * unscaled_radius(rd, p);
   }
 
-  /// `R0 = (r_max + r_min) / 2` of the surface bubbles of `region`, unscaled
+  /// `R0 = (q_95 + q_5) / 2` of the surface-bubble radii of `region` (5 % and 95 % quantiles), unscaled
   double default_radius(std::size_t region) const
   {
     return region < regions_->size() ? (*regions_)[region].r0 : 0.;

@@ -50,9 +50,9 @@ Stage 1 of the method: one fixed bubble on every model point that a triangle
 uses, with radius `surface_radius_factor` times the median length of the edges
 incident to the point (the paper says mean; the median keeps the one long
 edge of a coarse neighbour from inflating a fine point's bubble, which on
-modelA1 filled the corners of its box with bubbles of 2-4 km). Every edge counts once, whatever the number of
-triangles and patches that share it, so a point on a contact curve sees the
-edges of all the surfaces that meet there. Points no triangle uses get no
+modelA1 filled the corners of its box with bubbles of 2-4 km). Every edge
+counts once, whatever the number of triangles and patches that share it, so a
+point on a contact curve sees the edges of all the surfaces that meet there. Points no triangle uses get no
 bubble. Bubbles come in increasing point order; `surface_point` is the point
 index, `region` is `no_index`, `is_fixed` is true.
 
@@ -85,7 +85,6 @@ place_surface_bubbles(const Geological_model_3<GeomTraits>& model,
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
-  const std::size_t n = model.number_of_points();
   std::vector<std::pair<std::size_t, double> > incident; // (point, edge length)
   incident.reserve(2 * edges.size());
   for(const auto& e : edges)
