@@ -69,6 +69,9 @@ const char* usage_text =
 "                             volume (for inputs with poor triangles: tiny angles, edge\n"
 "                             lengths spread over orders of magnitude); contact curves,\n"
 "                             corners and the region and surface labels are kept\n"
+"  --keep-input-triangles     mesh the input triangles as they are; by default each\n"
+"                             planar piece of a surface (a flat box wall, say) is first\n"
+"                             re-triangulated (Delaunay, same points, same polygon)\n"
 "  --size S                   target edge length of the re-meshed surfaces (with\n"
 "                             --remesh-surfaces): in model units, or with a % sign, of\n"
 "                             the bounding-box diagonal (e.g. 2%); default: the median\n"
@@ -96,6 +99,7 @@ struct Options
   bool sliver_removal = true;
   double sliver_bound = 15.;
   bool remesh_surfaces = false;
+  bool keep_input_triangles = false;
   double size = 0.;          // absolute target edge length (0: not given)
   double relative_size = 0.; // fraction of the bounding-box diagonal (0: not given)
 };
@@ -139,6 +143,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--no-sliver-removal") o.sliver_removal = false;
     else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
     else if(a == "--remesh-surfaces") o.remesh_surfaces = true;
+    else if(a == "--keep-input-triangles") o.keep_input_triangles = true;
     else if(a == "--size")
     {
       std::string v = value(a);
@@ -254,8 +259,9 @@ int main(int argc, char** argv)
                     BM::parameters::bubble_mesh_report(&report,
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,
                     BM::parameters::sliver_bound(opt.sliver_bound,
+                    BM::parameters::keep_input_triangles(opt.keep_input_triangles,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))));
     // the size is a named parameter only when given: its absence selects the default
     if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, np));
     else if(opt.relative_size > 0.)
@@ -292,6 +298,14 @@ int main(int argc, char** argv)
                 << " -> " << 100. * rr.share_of_edges_within_size << " %, largest region volume change "
                 << rr.max_relative_volume_error << ", curve distance " << rr.max_curve_distance
                 << " of the diagonal\n" << std::defaultfloat;
+    if(report.planar_patches_retriangulated)
+    {
+      const auto& pr = report.planar_retriangulation;
+      std::cout << std::setprecision(4) << "planar pieces: " << pr.number_of_retriangulated_pieces << " of "
+                << pr.number_of_pieces << " re-triangulated (" << pr.number_of_triangles_in_pieces
+                << " triangles), their smallest angle " << pr.min_angle_before << " -> " << pr.min_angle_after
+                << " deg\n" << std::defaultfloat;
+    }
     // sliver removal may add interior vertices: count them too, so that the total is the mesh's
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices
               << " vertices (" << report.number_of_surface_bubbles << " surface points, "
@@ -300,7 +314,9 @@ int main(int argc, char** argv)
               << " added by sliver removal)\n"
               << (report.surfaces_remeshed ? "re-meshed" : "input") << " triangles kept whole: "
               << tr.number_of_triangles_kept_whole << " of " << meshed_triangles << " (" << std::setprecision(4)
-              << 100. * tr.share_of_triangles_kept_whole() << " %)\n" << std::defaultfloat
+              << 100. * tr.share_of_triangles_kept_whole() << " %"
+              << (report.planar_patches_retriangulated ? "; planar pieces counted re-triangulated" : "") << ")\n"
+              << std::defaultfloat
               << "time: " << (report.surfaces_remeshed ? "surface remeshing " + std::to_string(report.time_surface_remeshing) + " s, " : std::string())
               << "surface bubbles " << report.time_surface_bubbles << " s, placement "
               << report.time_placement << " s, relaxation " << report.time_relaxation

@@ -13,6 +13,7 @@
 #include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
+#include <CGAL/Bubble_mesh_3/retriangulate_planar_patches.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remove_slivers.h>
@@ -36,6 +37,8 @@ struct Bubble_mesh_report
 {
   bool surfaces_remeshed = false;             ///< whether stage 0 ran (`remesh_input_surfaces`)
   Surface_remeshing_report surface_remeshing; ///< stage 0 (`remesh_surfaces()`), if it ran
+  bool planar_patches_retriangulated = false; ///< whether planar pieces were re-triangulated (`retriangulate_planar_patches()`)
+  Planar_retriangulation_report planar_retriangulation; ///< if they were
   std::size_t number_of_surface_bubbles = 0;  ///< one per model point
   std::size_t number_of_initial_bubbles = 0;  ///< interior bubbles placed (stage 2)
   std::size_t number_of_relaxed_bubbles = 0;  ///< interior bubbles after relaxation and population control
@@ -55,6 +58,7 @@ namespace internal_np {
 enum bubble_mesh_report_t { bubble_mesh_report };
 enum stage_callback_t { stage_callback };
 enum remesh_input_surfaces_t { remesh_input_surfaces };
+enum keep_input_triangles_t { keep_input_triangles };
 } // namespace internal_np
 
 namespace parameters {
@@ -72,6 +76,11 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Stage_callback, stage_callback)
 /// \ingroup PkgBubbleMesh3Ref
 /// `make_bubble_mesh_3()` re-meshes the model's surfaces with `remesh_surfaces()` first
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, remesh_input_surfaces)
+
+/// \ingroup PkgBubbleMesh3Ref
+/// `make_bubble_mesh_3()` meshes the input triangles as they are, without
+/// re-triangulating planar pieces (`retriangulate_planar_patches()`) first
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, keep_input_triangles)
 
 } // namespace parameters
 
@@ -154,7 +163,16 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     report->time_surface_remeshing = timer.time();
     timer.reset();
   }
-  const Geological_model_3<GeomTraits>& model = report->surfaces_remeshed ? remeshed : input_model;
+  // Planar pieces (box walls, flat tops) as fans of needles would force poor
+  // tetrahedra and thousands of Steiner points; their own Delaunay
+  // triangulation covers the same polygon. Re-meshed surfaces need none.
+  Geological_model_3<GeomTraits> retriangulated;
+  report->planar_patches_retriangulated =
+    !report->surfaces_remeshed && !choose_parameter(get_parameter(np, internal_np::keep_input_triangles), false);
+  if(report->planar_patches_retriangulated)
+    report->planar_retriangulation = retriangulate_planar_patches(input_model, retriangulated);
+  const Geological_model_3<GeomTraits>& model =
+    report->surfaces_remeshed ? remeshed : report->planar_patches_retriangulated ? retriangulated : input_model;
 
   start("surface bubbles");
   timer.start();

@@ -93,6 +93,20 @@ assert float(m.group(1)) < 1. and float(m.group(2)) >= 25. and int(m.group(3)) =
 run "$tmp/cube.obj" --remesh-surfaces --size 25% -o "$tmp/r1.mesh" --threads 1 -q
 check "--remesh-surfaces: same mesh with 1 and 2 threads" cmp -s "$tmp/r1.mesh" "$tmp/r.mesh"
 
+# by default each planar face is re-triangulated first: the bottom's needle goes, the cube stays the cube
+run "$tmp/cube.obj" -o "$tmp/p.mesh" --quality-json "$tmp/qp.json" --threads 2
+check "planar pieces: exits 0" test "$rc" -eq 0
+check "planar pieces: summary line" contains "$out" "planar pieces: 6 of 6 re-triangulated (14 triangles)"
+run "$tmp/cube.obj" --keep-input-triangles -o "$tmp/k.mesh" --quality-json "$tmp/qk.json" --threads 2
+check "--keep-input-triangles exits 0" test "$rc" -eq 0
+check "--keep-input-triangles: no re-triangulation" test -z "$(echo "$out" | grep 'planar pieces')"
+check "--help lists --keep-input-triangles" bash -c "'$exe' --help | grep -q -- --keep-input-triangles"
+check "planar pieces re-triangulated: better smallest dihedral, same volume" python3 -c "
+import json,sys
+p=json.load(open('$tmp/qp.json'))['all']; k=json.load(open('$tmp/qk.json'))['all']
+print('  smallest dihedral', k['dihedral_angle']['min'], '->', p['dihedral_angle']['min'], ', volume', k['volume'], p['volume'])
+sys.exit(0 if p['dihedral_angle']['min'] > k['dihedral_angle']['min'] and abs(p['volume'] - 1) < 1e-12 and abs(k['volume'] - 1) < 1e-12 else 1)"
+
 run "$model" --size 2%
 check "--size without --remesh-surfaces exits 2" test "$rc" -eq 2
 check "--size without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"

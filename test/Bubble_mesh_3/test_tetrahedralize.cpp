@@ -18,6 +18,7 @@
 #include <CGAL/Bubble_mesh_3/Mesh_complex_3.h>
 #include <CGAL/Bubble_mesh_3/extract_region_mesh.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
+#include <CGAL/Bubble_mesh_3/retriangulate_planar_patches.h>
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 
@@ -545,6 +546,143 @@ void test_tilted_grid_box()
   assert(r_crowded.number_of_steiner_points() > 0);
 }
 
+
+// A thin box whose four walls are fans of needles from a corner (as
+// generated box walls often are), a planar grid at the bottom and top, and a
+// bent fault inside: retriangulate_planar_patches() must give each planar
+// piece better triangles over the same polygon, leave the bent fault alone,
+// and the mesh of the result must be valid and need fewer Steiner points.
+void test_planar_retriangulation()
+{
+  Model m;
+  Builder b(m);
+  const Grid grid{8};
+  const int n = grid.n;
+  const double height = 0.1;
+  m.add_region("box");
+  const std::size_t bottom = m.add_patch("bottom", 1, 0), top = m.add_patch("top", 0, 1),
+                    walls = m.add_patch("walls", 0, 1);
+  for(int k = 0; k < 2; ++k)
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+      {
+        const double z = k * height;
+        b.quad(b.point(grid.X(i, j), grid.Y(i, j), z), b.point(grid.X(i + 1, j), grid.Y(i + 1, j), z),
+               b.point(grid.X(i + 1, j + 1), grid.Y(i + 1, j + 1), z), b.point(grid.X(i, j + 1), grid.Y(i, j + 1), z),
+               k == 0 ? bottom : top, Vector_3(0, 0, 1));
+      }
+  for(int side = 0; side < 4; ++side)
+  {
+    // bottom and top nodes along the side; two fans across the diagonal B_0 T_n
+    std::vector<std::size_t> B, T;
+    for(int i = 0; i <= n; ++i)
+    {
+      const double x = side == 0 ? grid.X(i, 0) : side == 1 ? 1. : side == 2 ? grid.X(i, n) : 0.;
+      const double y = side == 0 ? 0. : side == 1 ? grid.Y(n, i) : side == 2 ? 1. : grid.Y(0, i);
+      B.push_back(b.point(x, y, 0.));
+      T.push_back(b.point(x, y, height));
+    }
+    const Vector_3 out = side == 0 ? Vector_3(0, -1, 0) : side == 1 ? Vector_3(1, 0, 0)
+                       : side == 2 ? Vector_3(0, 1, 0) : Vector_3(-1, 0, 0);
+    for(int i = 0; i < n; ++i)
+    {
+      b.triangle(B[0], T[std::size_t(i)], T[std::size_t(i + 1)], walls, out);
+      b.triangle(T[std::size_t(n)], B[std::size_t(i)], B[std::size_t(i + 1)], walls, out);
+    }
+  }
+  add_inner_surface(m, "bent fault", 1, [&](int i, int j) {
+    return Point_3(0.2 + 0.1 * i, 0.2 + 0.1 * j, 0.05 + 0.004 * jitter(i, j, 9));
+  }, 6, 6);
+  BM::validate_geological_model(m);
+
+  Model r;
+  const BM::Planar_retriangulation_report report = BM::retriangulate_planar_patches(m, r);
+  BM::validate_geological_model(r);
+  std::cout << "planar retriangulation: " << report.number_of_retriangulated_pieces << " of "
+            << report.number_of_pieces << " pieces, " << report.number_of_triangles_in_pieces
+            << " triangles, smallest angle " << report.min_angle_before << " -> " << report.min_angle_after
+            << " deg" << std::endl;
+  // bottom, top, four walls; the bent fault has no two coplanar neighbours
+  assert(report.number_of_pieces == 6 && report.number_of_retriangulated_pieces == 6);
+  assert(r.number_of_points() == m.number_of_points() && r.number_of_triangles() == m.number_of_triangles());
+
+  auto smallest_angle = [](const Model& x, std::size_t patch) {
+    double a = 180.;
+    for(std::size_t t = 0; t < x.number_of_triangles(); ++t)
+      if(x.patch_of_triangle(t) == patch)
+        a = (std::min)(a, BM::internal::smallest_triangle_angle(x.point(x.triangle(t)[0]), x.point(x.triangle(t)[1]),
+                                                                x.point(x.triangle(t)[2])));
+    return a;
+  };
+  std::cout << "  walls: smallest angle " << smallest_angle(m, walls) << " -> " << smallest_angle(r, walls) << " deg"
+            << std::endl;
+  assert(smallest_angle(m, walls) < 10. && smallest_angle(r, walls) > 3. * smallest_angle(m, walls));
+  assert(smallest_angle(r, bottom) >= smallest_angle(m, bottom) - 1e-9);
+
+  // per patch: same vector area (same polygon, same orientation), same
+  // boundary edges; each triangle in the plane of an input triangle of its patch
+  typedef std::array<std::size_t, 3> Tri;
+  auto sorted = [](Tri t) { std::sort(t.begin(), t.end()); return t; };
+  for(std::size_t p = 0; p < m.number_of_patches(); ++p)
+  {
+    Vector_3 area_m(0, 0, 0), area_r(0, 0, 0);
+    std::map<std::pair<std::size_t, std::size_t>, int> edges_m, edges_r;
+    auto add = [&](const Model& x, std::size_t t, Vector_3& area, std::map<std::pair<std::size_t, std::size_t>, int>& e) {
+      const Tri& tri = x.triangle(t);
+      area = area + 0.5 * CGAL::cross_product(x.point(tri[1]) - x.point(tri[0]), x.point(tri[2]) - x.point(tri[0]));
+      for(int k = 0; k < 3; ++k)
+        ++e[std::make_pair((std::min)(tri[k], tri[(k + 1) % 3]), (std::max)(tri[k], tri[(k + 1) % 3]))];
+    };
+    std::vector<Tri> tris_m, tris_r;
+    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+      if(m.patch_of_triangle(t) == p) { add(m, t, area_m, edges_m); tris_m.push_back(m.triangle(t)); }
+    for(std::size_t t = 0; t < r.number_of_triangles(); ++t)
+      if(r.patch_of_triangle(t) == p) { add(r, t, area_r, edges_r); tris_r.push_back(r.triangle(t)); }
+    assert(tris_m.size() == tris_r.size());
+    assert(std::sqrt((area_m - area_r).squared_length()) <= 1e-12 * std::sqrt(area_m.squared_length()) + 1e-15);
+    auto boundary = [](const std::map<std::pair<std::size_t, std::size_t>, int>& e) {
+      std::vector<std::pair<std::size_t, std::size_t> > out;
+      for(const auto& x : e)
+        if(x.second == 1) out.push_back(x.first);
+      return out;
+    };
+    assert(boundary(edges_m) == boundary(edges_r));
+    for(const Tri& t : tris_r)
+    {
+      bool in_a_plane = false;
+      for(const Tri& u : tris_m)
+      {
+        bool coplanar = true;
+        for(std::size_t v : t)
+          coplanar = coplanar && CGAL::orientation(m.point(u[0]), m.point(u[1]), m.point(u[2]), m.point(v)) == CGAL::COPLANAR;
+        in_a_plane = in_a_plane || coplanar;
+      }
+      assert(in_a_plane);
+    }
+    if(m.patch(p).name == "bent fault")
+    {
+      // not planar anywhere: kept triangle for triangle, corners in the same order
+      assert(tris_m == tris_r);
+    }
+    else if(p == walls)
+    {
+      std::vector<Tri> a, c;
+      for(const Tri& t : tris_m) a.push_back(sorted(t));
+      for(const Tri& t : tris_r) c.push_back(sorted(t));
+      std::sort(a.begin(), a.end());
+      std::sort(c.begin(), c.end());
+      assert(a != c); // the fans are gone
+    }
+  }
+
+  // both mesh; the re-triangulated walls need fewer Steiner points
+  const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 0.04, 11);
+  C3T3 fans, delaunay;
+  const Report rf = mesh_and_check("thin box with fan walls", m, inside, fans);
+  const Report rd = mesh_and_check("thin box, walls re-triangulated", r, inside, delaunay);
+  assert(rd.number_of_steiner_points() < rf.number_of_steiner_points());
+}
+
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
 void test_layered_model()
 {
@@ -648,6 +786,7 @@ int main(int argc, char** argv)
   test_pinch_out();
   test_fault_at_small_angle();
   test_tilted_grid_box();
+  test_planar_retriangulation();
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
   test_layered_model();
 #else
