@@ -71,7 +71,11 @@ const char* usage_text =
 "                             corners and the region and surface labels are kept\n"
 "  --keep-input-triangles     mesh the input triangles as they are; by default each\n"
 "                             planar piece of a surface (a flat box wall, say) is first\n"
-"                             re-triangulated (Delaunay, same points, same polygon)\n"
+"                             re-triangulated (Delaunay, same polygon)\n"
+"  --planar-angle-bound D     planar pieces in an axis plane (x, y or z constant) get\n"
+"                             new points until their triangles' angles reach D degrees\n"
+"                             where other surfaces allow (default 10; 0: re-triangulate\n"
+"                             with the input points only)\n"
 "  --size S                   target edge length of the re-meshed surfaces (with\n"
 "                             --remesh-surfaces): in model units, or with a % sign, of\n"
 "                             the bounding-box diagonal (e.g. 2%); default: the median\n"
@@ -100,6 +104,7 @@ struct Options
   double sliver_bound = 15.;
   bool remesh_surfaces = false;
   bool keep_input_triangles = false;
+  double planar_angle_bound = 10.;
   double size = 0.;          // absolute target edge length (0: not given)
   double relative_size = 0.; // fraction of the bounding-box diagonal (0: not given)
 };
@@ -144,6 +149,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
     else if(a == "--remesh-surfaces") o.remesh_surfaces = true;
     else if(a == "--keep-input-triangles") o.keep_input_triangles = true;
+    else if(a == "--planar-angle-bound") o.planar_angle_bound = parse_double(a, value(a));
     else if(a == "--size")
     {
       std::string v = value(a);
@@ -162,6 +168,8 @@ Options parse_options(int argc, char** argv)
   if((o.size > 0. || o.relative_size > 0.) && !o.remesh_surfaces)
     usage_error("--size is the target of --remesh-surfaces: give both");
   if(o.threads < 0) usage_error("--threads must not be negative");
+  if(!(o.planar_angle_bound >= 0. && o.planar_angle_bound <= 30.))
+    usage_error("--planar-angle-bound must be in [0, 30] degrees");
   if(!(o.sliver_bound > 0. && o.sliver_bound < 70.))
     usage_error("--sliver-bound must be in (0, 70) degrees (a regular tetrahedron has 70.53)");
   for(const std::string& out : o.outputs)
@@ -260,8 +268,9 @@ int main(int argc, char** argv)
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,
                     BM::parameters::sliver_bound(opt.sliver_bound,
                     BM::parameters::keep_input_triangles(opt.keep_input_triangles,
+                    BM::parameters::planar_angle_bound(opt.planar_angle_bound,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))));
     // the size is a named parameter only when given: its absence selects the default
     if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, np));
     else if(opt.relative_size > 0.)
@@ -278,7 +287,10 @@ int main(int argc, char** argv)
   const auto& tr = report.tetrahedralization;
   const auto& rr = report.surface_remeshing;
   // the triangles the tetrahedralization saw: the re-meshed ones if re-meshed
-  const std::size_t meshed_triangles = report.surfaces_remeshed ? rr.number_of_triangles : model.number_of_triangles();
+  const auto& pr = report.planar_retriangulation;
+  const std::size_t meshed_triangles =
+    report.surfaces_remeshed ? rr.number_of_triangles
+                             : model.number_of_triangles() - pr.number_of_triangles_before + pr.number_of_triangles_after;
   auto quality = BM::compute_c3t3_quality(c3t3,
                    BM::parameters::number_of_steiner_points(tr.number_of_steiner_points(),
                    BM::parameters::number_of_input_triangles(meshed_triangles,
@@ -300,11 +312,12 @@ int main(int argc, char** argv)
                 << " of the diagonal\n" << std::defaultfloat;
     if(report.planar_patches_retriangulated)
     {
-      const auto& pr = report.planar_retriangulation;
       std::cout << std::setprecision(4) << "planar pieces: " << pr.number_of_retriangulated_pieces << " of "
-                << pr.number_of_pieces << " re-triangulated (" << pr.number_of_triangles_in_pieces
-                << " triangles), their smallest angle " << pr.min_angle_before << " -> " << pr.min_angle_after
-                << " deg\n" << std::defaultfloat;
+                << pr.number_of_pieces << " re-triangulated, " << pr.number_of_refined_pieces << " with "
+                << pr.number_of_points_added << " new points; their triangles " << pr.number_of_triangles_before
+                << " -> " << pr.number_of_triangles_after << ", under 10 deg " << pr.number_of_small_angle_triangles_before
+                << " -> " << pr.number_of_small_angle_triangles_after << ", smallest angle " << pr.min_angle_before
+                << " -> " << pr.min_angle_after << " deg\n" << std::defaultfloat;
     }
     // sliver removal may add interior vertices: count them too, so that the total is the mesh's
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices

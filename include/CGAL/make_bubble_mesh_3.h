@@ -170,7 +170,7 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   report->planar_patches_retriangulated =
     !report->surfaces_remeshed && !choose_parameter(get_parameter(np, internal_np::keep_input_triangles), false);
   if(report->planar_patches_retriangulated)
-    report->planar_retriangulation = retriangulate_planar_patches(input_model, retriangulated);
+    report->planar_retriangulation = retriangulate_planar_patches(input_model, retriangulated, np);
   const Geological_model_3<GeomTraits>& model =
     report->surfaces_remeshed ? remeshed : report->planar_patches_retriangulated ? retriangulated : input_model;
 

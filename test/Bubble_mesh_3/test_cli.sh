@@ -96,7 +96,10 @@ check "--remesh-surfaces: same mesh with 1 and 2 threads" cmp -s "$tmp/r1.mesh" 
 # by default each planar face is re-triangulated first: the bottom's needle goes, the cube stays the cube
 run "$tmp/cube.obj" -o "$tmp/p.mesh" --quality-json "$tmp/qp.json" --threads 2
 check "planar pieces: exits 0" test "$rc" -eq 0
-check "planar pieces: summary line" contains "$out" "planar pieces: 6 of 6 re-triangulated (14 triangles)"
+check "planar pieces: summary line" contains "$out" "planar pieces: 6 of 6 re-triangulated"
+run "$tmp/cube.obj" --planar-angle-bound 45
+check "--planar-angle-bound 45 exits 2" test "$rc" -eq 2
+check "--planar-angle-bound 45 named" contains "$err" "--planar-angle-bound"
 run "$tmp/cube.obj" --keep-input-triangles -o "$tmp/k.mesh" --quality-json "$tmp/qk.json" --threads 2
 check "--keep-input-triangles exits 0" test "$rc" -eq 0
 check "--keep-input-triangles: no re-triangulation" test -z "$(echo "$out" | grep 'planar pieces')"

@@ -547,22 +547,21 @@ void test_tilted_grid_box()
 }
 
 
-// A thin box whose four walls are fans of needles from a corner (as
-// generated box walls often are), a planar grid at the bottom and top, and a
-// bent fault inside: retriangulate_planar_patches() must give each planar
-// piece better triangles over the same polygon, leave the bent fault alone,
-// and the mesh of the result must be valid and need fewer Steiner points.
-void test_planar_retriangulation()
+// The unit square times [0, 0.1], one region; patches 0 'bottom' (a grid),
+// 1 'top' and 2 'walls'. With `flat_top` the top is two triangles and each
+// wall a fan from a top corner to the bottom nodes; else the top is a grid
+// too and each wall two fans of needles across its diagonal.
+const double thin_box_height = 0.1;
+void make_thin_box(Model& m, bool flat_top)
 {
-  Model m;
   Builder b(m);
   const Grid grid{8};
   const int n = grid.n;
-  const double height = 0.1;
+  const double height = thin_box_height;
   m.add_region("box");
   const std::size_t bottom = m.add_patch("bottom", 1, 0), top = m.add_patch("top", 0, 1),
                     walls = m.add_patch("walls", 0, 1);
-  for(int k = 0; k < 2; ++k)
+  for(int k = 0; k < (flat_top ? 1 : 2); ++k)
     for(int i = 0; i < n; ++i)
       for(int j = 0; j < n; ++j)
       {
@@ -571,39 +570,55 @@ void test_planar_retriangulation()
                b.point(grid.X(i + 1, j + 1), grid.Y(i + 1, j + 1), z), b.point(grid.X(i, j + 1), grid.Y(i, j + 1), z),
                k == 0 ? bottom : top, Vector_3(0, 0, 1));
       }
+  if(flat_top)
+    b.quad(b.point(0, 0, height), b.point(1, 0, height), b.point(1, 1, height), b.point(0, 1, height), top,
+           Vector_3(0, 0, 1));
   for(int side = 0; side < 4; ++side)
   {
-    // bottom and top nodes along the side; two fans across the diagonal B_0 T_n
+    // bottom and top nodes along the side
     std::vector<std::size_t> B, T;
     for(int i = 0; i <= n; ++i)
     {
       const double x = side == 0 ? grid.X(i, 0) : side == 1 ? 1. : side == 2 ? grid.X(i, n) : 0.;
       const double y = side == 0 ? 0. : side == 1 ? grid.Y(n, i) : side == 2 ? 1. : grid.Y(0, i);
       B.push_back(b.point(x, y, 0.));
-      T.push_back(b.point(x, y, height));
+      if(!flat_top || i == 0 || i == n) T.push_back(b.point(x, y, height));
     }
     const Vector_3 out = side == 0 ? Vector_3(0, -1, 0) : side == 1 ? Vector_3(1, 0, 0)
                        : side == 2 ? Vector_3(0, 1, 0) : Vector_3(-1, 0, 0);
-    for(int i = 0; i < n; ++i)
-    {
-      b.triangle(B[0], T[std::size_t(i)], T[std::size_t(i + 1)], walls, out);
-      b.triangle(T[std::size_t(n)], B[std::size_t(i)], B[std::size_t(i + 1)], walls, out);
-    }
+    for(std::size_t i = 0; i + 1 < T.size(); ++i) b.triangle(B[0], T[i], T[i + 1], walls, out);
+    for(int i = 0; i < n; ++i) b.triangle(T.back(), B[std::size_t(i)], B[std::size_t(i + 1)], walls, out);
   }
+}
+
+// A thin box whose four walls are fans of needles from a corner (as
+// generated box walls often are), a planar grid at the bottom and top, and a
+// bent fault inside: retriangulate_planar_patches() must give each planar
+// piece better triangles over the same polygon, leave the bent fault alone,
+// and the mesh of the result must be valid and need fewer Steiner points.
+void test_planar_retriangulation()
+{
+  Model m;
+  make_thin_box(m, false);
+  const double height = thin_box_height;
+  const std::size_t bottom = 0, walls = 2;
   add_inner_surface(m, "bent fault", 1, [&](int i, int j) {
     return Point_3(0.2 + 0.1 * i, 0.2 + 0.1 * j, 0.05 + 0.004 * jitter(i, j, 9));
   }, 6, 6);
   BM::validate_geological_model(m);
 
+  // without new points first
   Model r;
-  const BM::Planar_retriangulation_report report = BM::retriangulate_planar_patches(m, r);
+  const BM::Planar_retriangulation_report report =
+    BM::retriangulate_planar_patches(m, r, BM::parameters::planar_angle_bound(0.));
   BM::validate_geological_model(r);
   std::cout << "planar retriangulation: " << report.number_of_retriangulated_pieces << " of "
-            << report.number_of_pieces << " pieces, " << report.number_of_triangles_in_pieces
-            << " triangles, smallest angle " << report.min_angle_before << " -> " << report.min_angle_after
-            << " deg" << std::endl;
+            << report.number_of_pieces << " pieces, " << report.number_of_triangles_before << " -> "
+            << report.number_of_triangles_after << " triangles, smallest angle " << report.min_angle_before << " -> "
+            << report.min_angle_after << " deg" << std::endl;
   // bottom, top, four walls; the bent fault has no two coplanar neighbours
   assert(report.number_of_pieces == 6 && report.number_of_retriangulated_pieces == 6);
+  assert(report.number_of_points_added == 0 && report.number_of_refined_pieces == 0);
   assert(r.number_of_points() == m.number_of_points() && r.number_of_triangles() == m.number_of_triangles());
 
   auto smallest_angle = [](const Model& x, std::size_t patch) {
@@ -681,6 +696,105 @@ void test_planar_retriangulation()
   const Report rf = mesh_and_check("thin box with fan walls", m, inside, fans);
   const Report rd = mesh_and_check("thin box, walls re-triangulated", r, inside, delaunay);
   assert(rd.number_of_steiner_points() < rf.number_of_steiner_points());
+
+  // refined to 20 degrees: every piece here lies in an axis plane and only
+  // meets others of them, so the angle bound is reached everywhere
+  Model g;
+  const BM::Planar_retriangulation_report refined =
+    BM::retriangulate_planar_patches(m, g, BM::parameters::planar_angle_bound(20.));
+  BM::validate_geological_model(g);
+  std::cout << "planar refinement: " << refined.number_of_refined_pieces << " pieces, "
+            << refined.number_of_points_added << " new points, " << refined.number_of_triangles_before << " -> "
+            << refined.number_of_triangles_after << " triangles, smallest angle " << refined.min_angle_before
+            << " -> " << refined.min_angle_after << " deg" << std::endl;
+  assert(refined.number_of_refined_pieces >= 1 && refined.number_of_points_added > 0);
+  assert(refined.min_angle_after >= 20. - 1e-9 && report.min_angle_after < 20.); // the bound was needed
+  assert(g.number_of_points() == m.number_of_points() + refined.number_of_points_added);
+  for(std::size_t p = 0; p < m.number_of_patches(); ++p)
+    if(m.patch(p).name != "bent fault")
+      assert(smallest_angle(g, p) >= 20. - 1e-9);
+  // new points: on the box's faces (exact coordinates), none on the bent fault
+  for(std::size_t i = m.number_of_points(); i < g.number_of_points(); ++i)
+  {
+    const Point_3& q = g.point(i);
+    assert(q.x() == 0. || q.x() == 1. || q.y() == 0. || q.y() == 1. || q.z() == 0. || q.z() == height);
+  }
+  for(std::size_t p = 0; p < m.number_of_patches(); ++p)
+  {
+    // vector area (orientation) and area
+    Vector_3 area_m(0, 0, 0), area_g(0, 0, 0);
+    double size_m = 0., size_g = 0.;
+    std::vector<Tri> tris_m, tris_g;
+    auto add = [&](const Model& x, std::size_t t, Vector_3& area, double& size, std::vector<Tri>& tris) {
+      const Tri& tri = x.triangle(t);
+      const Vector_3 a = 0.5 * CGAL::cross_product(x.point(tri[1]) - x.point(tri[0]), x.point(tri[2]) - x.point(tri[0]));
+      area = area + a;
+      size += std::sqrt(a.squared_length());
+      tris.push_back(tri);
+    };
+    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+      if(m.patch_of_triangle(t) == p) add(m, t, area_m, size_m, tris_m);
+    for(std::size_t t = 0; t < g.number_of_triangles(); ++t)
+      if(g.patch_of_triangle(t) == p) add(g, t, area_g, size_g, tris_g);
+    assert(std::abs(size_m - size_g) <= 1e-12 * size_m);
+    assert(std::sqrt((area_m - area_g).squared_length()) <= 1e-12 * size_m);
+    if(m.patch(p).name == "bent fault") assert(tris_m == tris_g);
+  }
+  C3T3 fine;
+  mesh_and_check("thin box, planar pieces refined", g, inside, fine);
+}
+
+// A thin box whose top is two triangles and whose walls therefore have no
+// point on their top edges (as the strip under a flat top often has): only
+// new points on the edges between the top and the walls, and inside the top,
+// can make its triangles good. Every face lies in an axis plane, so the
+// refinement reaches its angle bound everywhere.
+void test_planar_refinement()
+{
+  Model m;
+  make_thin_box(m, true);
+  const double height = thin_box_height;
+  const std::size_t bottom = 0, top = 1, walls = 2;
+  BM::validate_geological_model(m);
+
+  Model g;
+  const BM::Planar_retriangulation_report r =
+    BM::retriangulate_planar_patches(m, g, BM::parameters::planar_angle_bound(20.));
+  BM::validate_geological_model(g);
+  std::cout << "planar refinement, flat top: " << r.number_of_refined_pieces << " of " << r.number_of_pieces
+            << " pieces, " << r.number_of_points_added << " new points, " << r.number_of_triangles_before << " -> "
+            << r.number_of_triangles_after << " triangles, smallest angle " << r.min_angle_before << " -> "
+            << r.min_angle_after << " deg" << std::endl;
+  assert(r.number_of_pieces == 6 && r.number_of_retriangulated_pieces == 6);
+  assert(r.min_angle_before < 10. && r.min_angle_after >= 20. - 1e-9);
+  // points on the top's edges (shared with the walls) and inside the top
+  std::size_t on_top_edges = 0, inside_top = 0;
+  for(std::size_t i = m.number_of_points(); i < g.number_of_points(); ++i)
+  {
+    const Point_3& q = g.point(i);
+    if(q.z() != height) continue;
+    const bool on_edge = q.x() == 0. || q.x() == 1. || q.y() == 0. || q.y() == 1.;
+    (on_edge ? on_top_edges : inside_top) += 1;
+  }
+  assert(on_top_edges > 0 && inside_top > 0);
+  // same area per patch; every new point exactly on a face of the box
+  for(std::size_t i = m.number_of_points(); i < g.number_of_points(); ++i)
+  {
+    const Point_3& q = g.point(i);
+    assert(q.x() == 0. || q.x() == 1. || q.y() == 0. || q.y() == 1. || q.z() == 0. || q.z() == height);
+  }
+  for(std::size_t p : {bottom, top, walls})
+  {
+    double before = 0., after = 0.;
+    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+      if(m.patch_of_triangle(t) == p) before += std::sqrt(CGAL::squared_area(m.point(m.triangle(t)[0]), m.point(m.triangle(t)[1]), m.point(m.triangle(t)[2])));
+    for(std::size_t t = 0; t < g.number_of_triangles(); ++t)
+      if(g.patch_of_triangle(t) == p) after += std::sqrt(CGAL::squared_area(g.point(g.triangle(t)[0]), g.point(g.triangle(t)[1]), g.point(g.triangle(t)[2])));
+    assert(std::abs(before - after) <= 1e-12 * before);
+  }
+  const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 0.04, 12);
+  C3T3 c3t3;
+  mesh_and_check("thin box with a flat top, planar pieces refined", g, inside, c3t3);
 }
 
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
@@ -787,6 +901,7 @@ int main(int argc, char** argv)
   test_fault_at_small_angle();
   test_tilted_grid_box();
   test_planar_retriangulation();
+  test_planar_refinement();
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
   test_layered_model();
 #else

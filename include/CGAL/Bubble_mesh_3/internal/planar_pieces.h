@@ -1,0 +1,591 @@
+// Copyright (c) 2026 Bubble_mesh_3 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : Bubble_mesh_3 team
+
+#ifndef CGAL_BUBBLE_MESH_3_INTERNAL_PLANAR_PIECES_H
+#define CGAL_BUBBLE_MESH_3_INTERNAL_PLANAR_PIECES_H
+
+// The machinery of retriangulate_planar_patches(): planar pieces of the
+// patches, each triangulated in its plane by a 2D constrained Delaunay
+// triangulation, pieces of axis planes refined by circumcentres.
+//
+// Exactness: points are only added where the double coordinates are exact -
+// inside an axis plane (its constant coordinate copied) and on an edge whose
+// rounded midpoint is exactly collinear with its ends (checked) - so every
+// piece stays exactly planar and every split edge exactly straight, and the
+// recovery's exact plane groups (recover_surface.h) still see them as planes.
+
+#include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/mesh_quality.h> // smallest_triangle_angle
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_face_base_2.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <set>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Bubble_mesh_3 {
+
+/*!
+\ingroup PkgBubbleMesh3Ref
+
+What `retriangulate_planar_patches()` did. Angles are in degrees.
+*/
+struct Planar_retriangulation_report
+{
+  std::size_t number_of_pieces = 0;                 ///< planar pieces (two or more triangles, or one in an axis plane)
+  std::size_t number_of_retriangulated_pieces = 0;  ///< of those, the pieces given a new triangulation
+  std::size_t number_of_refined_pieces = 0;         ///< of those, the pieces that got new points
+  std::size_t number_of_points_added = 0;           ///< new points (inside axis-plane pieces and on edges between them)
+  std::size_t number_of_triangles_before = 0;       ///< triangles of the re-triangulated pieces, before
+  std::size_t number_of_triangles_after = 0;        ///< and after
+  std::size_t number_of_small_angle_triangles_before = 0; ///< of those, with an angle under 10 degrees, before
+  std::size_t number_of_small_angle_triangles_after = 0;  ///< and after
+  double min_angle_before = 180.;                   ///< smallest triangle angle of the re-triangulated pieces, before
+  double min_angle_after = 180.;                    ///< the same, after
+};
+
+namespace internal {
+
+template <class Point_3>
+double smallest_triangle_angle(const Point_3& a, const Point_3& b, const Point_3& c)
+{
+  auto xyz = [](const Point_3& p) {
+    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  return smallest_triangle_angle(xyz(a), xyz(b), xyz(c)); // mesh_quality.h
+}
+
+template <class GeomTraits>
+class Planar_pieces
+{
+  typedef Geological_model_3<GeomTraits>  Model;
+  typedef typename GeomTraits::Point_3    Point_3;
+  typedef typename GeomTraits::Vector_3   Vector_3;
+  typedef typename GeomTraits::Point_2    Point_2;
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, GeomTraits>         Vb;
+  typedef CGAL::Constrained_triangulation_face_base_2<GeomTraits>                      Cfb;
+  typedef CGAL::Triangulation_face_base_with_info_2<int, GeomTraits, Cfb>              Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb>                                 Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<GeomTraits, Tds, CGAL::No_constraint_intersection_tag> CDT;
+  typedef std::array<std::size_t, 3> Triangle;
+
+  // a subsegment of a piece's boundary: its ends (point ids), its input edge,
+  // and whether the piece lies on one side only (1) or on both (0)
+  struct Subsegment { std::size_t u, v, edge; int toggle; };
+
+  // a piece's plane: 2D coordinates and the way back
+  struct Frame
+  {
+    int axis = -1;       // x, y or z constant (0, 1, 2), or -1: a tilted plane
+    double level = 0.;   // that constant
+    Point_3 origin;      // tilted planes: an orthonormal frame
+    Vector_3 e1, e2;
+    bool flip = false;   // counterclockwise in 2D is clockwise for the piece
+    int exact_axis = 0;  // the projection that checks orientations exactly
+    CGAL::Orientation up = CGAL::POSITIVE; // the piece's orientation in that projection
+  };
+
+public:
+  Planar_pieces(const Model& input, double angle_bound)
+    : in_(input), np_(input.number_of_points()), nt_(input.number_of_triangles()),
+      sin_bound_(std::sin((std::min)(angle_bound, 34.) * CGAL_PI / 180.)), refine_(angle_bound > 0.)
+  {
+    build_edges();
+    build_pieces();
+  }
+
+  Planar_retriangulation_report run(Model& out)
+  {
+    Planar_retriangulation_report report;
+    if(refine_ && refine_all() && write(out, report)) return report;
+    // a piece being refined failed its check: refine none (its neighbours
+    // may have points on the edges they share with it)
+    unrefine();
+    write(out, report);
+    return report;
+  }
+
+private:
+  void unrefine()
+  {
+    extra_.clear();
+    for(auto& l : edge_points_) l.clear();
+    for(auto& l : inner_) l.clear();
+  }
+
+  // writes the model; false if a piece with new points failed its check
+  bool write(Model& out, Planar_retriangulation_report& report) const
+  {
+    report = Planar_retriangulation_report();
+    out = Model();
+    out.set_file_name(in_.file_name());
+    for(std::size_t r = 1; r < in_.regions().size(); ++r) out.add_region(in_.region(r).name);
+    for(const auto& p : in_.patches()) out.add_patch(p.name, p.positive_region, p.negative_region);
+    for(std::size_t i = 0; i < np_; ++i) out.add_point(in_.point(i), in_.point_source(i));
+    for(const Point_3& p : extra_) out.add_point(p);
+    report.number_of_points_added = extra_.size();
+
+    std::vector<Triangle> tris;
+    for(std::size_t p = 0; p < pieces_.size(); ++p)
+    {
+      const std::vector<std::size_t>& ts = pieces_[p];
+      const std::size_t first = ts.front();
+      const bool is_piece = ts.size() > 1 || frames_[p].axis >= 0;
+      const bool refined = !inner_[p].empty() || boundary_has_new_points(p);
+      if(is_piece) ++report.number_of_pieces;
+      if(!is_piece || !triangulate(p, tris))
+      {
+        if(refined) return false;
+        for(std::size_t t : ts)
+          out.add_triangle(in_.triangle(t)[0], in_.triangle(t)[1], in_.triangle(t)[2], in_.patch_of_triangle(t),
+                           in_.triangle_source(t));
+        continue;
+      }
+      ++report.number_of_retriangulated_pieces;
+      if(refined) ++report.number_of_refined_pieces;
+      report.number_of_triangles_before += ts.size();
+      report.number_of_triangles_after += tris.size();
+      for(std::size_t t : ts)
+      {
+        const double a = angle(in_.triangle(t));
+        report.min_angle_before = (std::min)(report.min_angle_before, a);
+        if(a < 10.) ++report.number_of_small_angle_triangles_before;
+      }
+      for(const Triangle& t : tris)
+      {
+        const double a = angle(t);
+        report.min_angle_after = (std::min)(report.min_angle_after, a);
+        if(a < 10.) ++report.number_of_small_angle_triangles_after;
+        // errors name the piece's first input triangle
+        out.add_triangle(t[0], t[1], t[2], in_.patch_of_triangle(first), in_.triangle_source(first));
+      }
+    }
+    return true;
+  }
+
+  const Point_3& point(std::size_t id) const { return id < np_ ? in_.point(id) : extra_[id - np_]; }
+  double angle(const Triangle& t) const { return smallest_triangle_angle(point(t[0]), point(t[1]), point(t[2])); }
+
+  static std::uint64_t pair_key(std::size_t a, std::size_t b)
+  {
+    if(a > b) std::swap(a, b);
+    return (std::uint64_t(a) << 32) | std::uint64_t(b);
+  }
+
+  // ---- edges and pieces ------------------------------------------------------
+
+  void build_edges()
+  {
+    tri_edges_.resize(nt_);
+    for(std::size_t t = 0; t < nt_; ++t)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t a = in_.triangle(t)[k], b = in_.triangle(t)[(k + 1) % 3];
+        auto ins = edge_id_.emplace(pair_key(a, b), edge_ends_.size());
+        if(ins.second)
+        {
+          edge_ends_.push_back({{(std::min)(a, b), (std::max)(a, b)}});
+          edge_tris_.emplace_back();
+        }
+        edge_tris_[ins.first->second].push_back(t);
+        tri_edges_[t][k] = ins.first->second;
+      }
+    edge_points_.resize(edge_ends_.size());
+  }
+
+  // whether triangle `t` runs from a to b (else from b to a)
+  bool runs(std::size_t t, std::size_t a, std::size_t b) const
+  {
+    const auto& tri = in_.triangle(t);
+    for(int k = 0; k < 3; ++k)
+      if(tri[k] == a && tri[(k + 1) % 3] == b) return true;
+    return false;
+  }
+
+  // an edge inside a piece: two triangles of one patch, coplanar, oriented alike
+  bool is_free(std::size_t e) const
+  {
+    const std::vector<std::size_t>& ts = edge_tris_[e];
+    if(ts.size() != 2) return false;
+    const std::size_t t1 = ts[0], t2 = ts[1], a = edge_ends_[e][0], b = edge_ends_[e][1];
+    if(in_.patch_of_triangle(t1) != in_.patch_of_triangle(t2) || runs(t1, a, b) == runs(t2, a, b)) return false;
+    const auto& u = in_.triangle(t1);
+    for(std::size_t x : in_.triangle(t2))
+      if(CGAL::orientation(in_.point(u[0]), in_.point(u[1]), in_.point(u[2]), in_.point(x)) != CGAL::COPLANAR)
+        return false;
+    return true;
+  }
+
+  void build_pieces()
+  {
+    std::vector<std::size_t> parent(nt_);
+    for(std::size_t t = 0; t < nt_; ++t) parent[t] = t;
+    auto find = [&](std::size_t t) {
+      while(parent[t] != t) t = parent[t] = parent[parent[t]];
+      return t;
+    };
+    free_.resize(edge_ends_.size());
+    for(std::size_t e = 0; e < edge_ends_.size(); ++e)
+    {
+      free_[e] = is_free(e);
+      if(!free_[e]) continue;
+      const std::size_t r1 = find(edge_tris_[e][0]), r2 = find(edge_tris_[e][1]);
+      if(r1 != r2) parent[(std::max)(r1, r2)] = (std::min)(r1, r2);
+    }
+    // pieces in the order of their first triangle
+    std::vector<std::size_t> piece_of_root(nt_, std::size_t(-1));
+    piece_of_.resize(nt_);
+    for(std::size_t t = 0; t < nt_; ++t)
+    {
+      std::size_t& p = piece_of_root[find(t)];
+      if(p == std::size_t(-1)) { p = pieces_.size(); pieces_.emplace_back(); }
+      pieces_[p].push_back(t);
+      piece_of_[t] = p;
+    }
+    inner_.resize(pieces_.size());
+    frames_.resize(pieces_.size());
+    for(std::size_t p = 0; p < pieces_.size(); ++p) frames_[p] = frame(pieces_[p]);
+
+    // edges that may be split: every triangle on them is in a piece being refined
+    soft_.assign(edge_ends_.size(), 0);
+    if(!refine_) return;
+    for(std::size_t e = 0; e < edge_ends_.size(); ++e)
+    {
+      if(free_[e]) continue;
+      bool soft = true;
+      for(std::size_t t : edge_tris_[e]) soft = soft && frames_[piece_of_[t]].axis >= 0;
+      soft_[e] = soft;
+    }
+  }
+
+  Frame frame(const std::vector<std::size_t>& ts) const
+  {
+    Frame f;
+    const auto& t0 = in_.triangle(ts[0]);
+    const Point_3& o = in_.point(t0[0]);
+    const Vector_3 n = CGAL::cross_product(in_.point(t0[1]) - o, in_.point(t0[2]) - o);
+    for(int i = 1; i < 3; ++i)
+      if(std::abs(CGAL::to_double(n[i])) > std::abs(CGAL::to_double(n[f.exact_axis]))) f.exact_axis = i;
+    f.up = CGAL::orientation(project(o, f.exact_axis), project(in_.point(t0[1]), f.exact_axis),
+                             project(in_.point(t0[2]), f.exact_axis));
+    // an axis plane when every point has the same coordinate along the normal's axis
+    bool axis_plane = n[(f.exact_axis + 1) % 3] == 0 && n[(f.exact_axis + 2) % 3] == 0;
+    for(std::size_t t : ts)
+      for(std::size_t v : in_.triangle(t))
+        axis_plane = axis_plane && in_.point(v)[f.exact_axis] == o[f.exact_axis];
+    if(axis_plane)
+    {
+      f.axis = f.exact_axis;
+      f.level = CGAL::to_double(o[f.axis]);
+      f.flip = f.up == CGAL::NEGATIVE;
+      return f;
+    }
+    // a tilted plane: an orthonormal frame for the Delaunay criterion (the
+    // projection would stretch it); counterclockwise in it is the piece's side
+    f.origin = o;
+    const Vector_3 d = in_.point(t0[1]) - o;
+    f.e1 = d / std::sqrt(CGAL::to_double(d.squared_length()));
+    f.e2 = CGAL::cross_product(n, f.e1);
+    f.e2 = f.e2 / std::sqrt(CGAL::to_double(f.e2.squared_length()));
+    return f;
+  }
+
+  static Point_2 project(const Point_3& p, int axis) { return Point_2(p[(axis + 1) % 3], p[(axis + 2) % 3]); }
+
+  Point_2 to_2d(const Frame& f, const Point_3& p) const
+  {
+    if(f.axis >= 0) return project(p, f.axis);
+    const Vector_3 d = p - f.origin;
+    return Point_2(d * f.e1, d * f.e2);
+  }
+
+  // a point of an axis plane from its 2D coordinates: exactly on the plane
+  static Point_3 lift(const Frame& f, const Point_2& q)
+  {
+    std::array<double, 3> c;
+    c[std::size_t(f.axis)] = f.level;
+    c[std::size_t((f.axis + 1) % 3)] = CGAL::to_double(q.x());
+    c[std::size_t((f.axis + 2) % 3)] = CGAL::to_double(q.y());
+    return Point_3(c[0], c[1], c[2]);
+  }
+
+  bool boundary_has_new_points(std::size_t p) const
+  {
+    for(std::size_t t : pieces_[p])
+      for(std::size_t e : tri_edges_[t])
+        if(!edge_points_[e].empty()) return true;
+    return false;
+  }
+
+  // ---- one piece's triangulation ---------------------------------------------------
+
+  // The constrained Delaunay triangulation of piece `p`'s points with its
+  // boundary as constraints, faces inside marked 1; false if it cannot be
+  // checked to be the piece's polygon.
+  bool build(std::size_t p, CDT& cdt, std::vector<Subsegment>& subs) const
+  {
+    const Frame& f = frames_[p];
+    subs.clear();
+    std::vector<std::size_t> pts;
+    std::map<std::size_t, int> boundary; // edge -> 1 if on the piece's boundary, 0 if inside it
+    for(std::size_t t : pieces_[p])
+    {
+      pts.insert(pts.end(), in_.triangle(t).begin(), in_.triangle(t).end());
+      for(std::size_t e : tri_edges_[t])
+      {
+        if(free_[e]) continue;
+        auto ins = boundary.emplace(e, 1);
+        if(!ins.second) ins.first->second = 0; // two triangles of the piece on it
+      }
+    }
+    std::unordered_map<std::uint64_t, int> toggle;
+    for(const auto& eb : boundary)
+    {
+      const std::size_t e = eb.first;
+      std::vector<std::size_t> chain(1, edge_ends_[e][0]);
+      for(const auto& tp : edge_points_[e]) chain.push_back(tp.second);
+      chain.push_back(edge_ends_[e][1]);
+      for(std::size_t k = 0; k + 1 < chain.size(); ++k)
+      {
+        subs.push_back(Subsegment{chain[k], chain[k + 1], e, eb.second});
+        toggle[pair_key(chain[k], chain[k + 1])] = eb.second;
+      }
+      pts.insert(pts.end(), chain.begin() + 1, chain.end() - 1);
+    }
+    pts.insert(pts.end(), inner_[p].begin(), inner_[p].end());
+    std::sort(pts.begin(), pts.end());
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+
+    std::unordered_map<std::size_t, typename CDT::Vertex_handle> vh;
+    for(std::size_t id : pts)
+    {
+      const typename CDT::Vertex_handle v = cdt.insert(to_2d(f, point(id)));
+      if(cdt.number_of_vertices() != vh.size() + 1) return false; // two points project to one
+      v->info() = id;
+      vh[id] = v;
+    }
+    try
+    {
+      for(const Subsegment& s : subs) cdt.insert_constraint(vh[s.u], vh[s.v]);
+    }
+    catch(...) { return false; } // constraints that cross
+    if(cdt.number_of_vertices() != pts.size()) return false;
+
+    // inside: across a boundary subsegment the side changes, across any other it does not
+    for(auto fh = cdt.all_faces_begin(); fh != cdt.all_faces_end(); ++fh) fh->info() = -1;
+    std::vector<typename CDT::Face_handle> stack(1, cdt.infinite_face());
+    cdt.infinite_face()->info() = 0;
+    while(!stack.empty())
+    {
+      const typename CDT::Face_handle fh = stack.back();
+      stack.pop_back();
+      for(int i = 0; i < 3; ++i)
+      {
+        int side = fh->info();
+        if(cdt.is_constrained(std::make_pair(fh, i)))
+        {
+          auto it = toggle.find(pair_key(fh->vertex(cdt.cw(i))->info(), fh->vertex(cdt.ccw(i))->info()));
+          if(it == toggle.end()) return false; // a point on a constraint split it
+          side ^= it->second;
+        }
+        const typename CDT::Face_handle g = fh->neighbor(i);
+        if(g->info() == -1) { g->info() = side; stack.push_back(g); }
+        else if(g->info() != side) return false;
+      }
+    }
+    return true;
+  }
+
+  // piece `p`'s new triangles, oriented as the piece; false if the check fails
+  bool triangulate(std::size_t p, std::vector<Triangle>& out) const
+  {
+    out.clear();
+    CDT cdt;
+    std::vector<Subsegment> subs;
+    if(!build(p, cdt, subs)) return false;
+    const Frame& f = frames_[p];
+    double area_before = 0., area_after = 0.;
+    auto area = [&](const Triangle& t) {
+      return std::sqrt(CGAL::to_double(
+               CGAL::cross_product(point(t[1]) - point(t[0]), point(t[2]) - point(t[0])).squared_length()));
+    };
+    for(std::size_t t : pieces_[p]) area_before += area(in_.triangle(t));
+    for(auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh)
+    {
+      if(fh->info() != 1) continue;
+      Triangle t = {{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}};
+      if(f.flip) std::swap(t[1], t[2]);
+      if(CGAL::orientation(project(point(t[0]), f.exact_axis), project(point(t[1]), f.exact_axis),
+                           project(point(t[2]), f.exact_axis)) != f.up)
+        return false;
+      area_after += area(t);
+      out.push_back(t);
+    }
+    return std::abs(area_after - area_before) <= 1e-9 * area_before;
+  }
+
+  // ---- refinement of axis-plane pieces ---------------------------------------------
+
+  // refines every axis-plane piece until no edge between them is split any
+  // more; false if a piece's triangulation failed its check
+  bool refine_all()
+  {
+    double shortest = std::numeric_limits<double>::infinity();
+    for(const auto& e : edge_ends_)
+      shortest = (std::min)(shortest, std::sqrt(CGAL::to_double(CGAL::squared_distance(in_.point(e[0]), in_.point(e[1])))));
+    min_split_length_ = shortest;
+    budget_ = 2 * np_ + 1000;
+    for(int round = 0; round < 100; ++round)
+    {
+      bool split = false;
+      for(std::size_t p = 0; p < pieces_.size(); ++p)
+      {
+        if(frames_[p].axis < 0) continue;
+        int r = refine(p);
+        if(r < 0) return false;
+        split = split || r > 0;
+      }
+      if(!split) break;
+    }
+    return true;
+  }
+
+  // -1: the check failed; 1: an edge was split (its other pieces need another look); 0: done
+  int refine(std::size_t p)
+  {
+    const Frame& f = frames_[p];
+    int result = 0;
+    for(;;)
+    {
+      CDT cdt;
+      std::vector<Subsegment> subs;
+      if(!build(p, cdt, subs)) return -1;
+      std::set<std::array<std::size_t, 3> > given_up;
+      bool rebuild = false;
+      while(!rebuild)
+      {
+        if(extra_.size() >= budget_) return result;
+        // the bad face with the largest circumcircle
+        typename CDT::Face_handle worst;
+        double worst_r2 = -1.;
+        std::array<std::size_t, 3> worst_key;
+        for(auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh)
+        {
+          if(fh->info() != 1) continue;
+          const Point_2& a = fh->vertex(0)->point();
+          const Point_2& b = fh->vertex(1)->point();
+          const Point_2& c = fh->vertex(2)->point();
+          const double la = CGAL::to_double(CGAL::squared_distance(b, c)), lb = CGAL::to_double(CGAL::squared_distance(c, a)),
+                       lc = CGAL::to_double(CGAL::squared_distance(a, b));
+          const double twice_area = std::abs(CGAL::to_double(CGAL::area(a, b, c))) * 2.;
+          // the smallest angle is opposite the shortest side: sin = 2A / (product of the other two)
+          const double shortest = (std::min)({la, lb, lc});
+          const double others = shortest == la ? lb * lc : shortest == lb ? la * lc : la * lb;
+          if(twice_area >= sin_bound_ * std::sqrt(others)) continue;
+          std::array<std::size_t, 3> key = {{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}};
+          std::sort(key.begin(), key.end());
+          if(given_up.count(key)) continue;
+          const double r2 = CGAL::to_double(CGAL::squared_radius(a, b, c));
+          if(r2 > worst_r2 || (r2 == worst_r2 && key < worst_key)) { worst_r2 = r2; worst = fh; worst_key = key; }
+        }
+        if(worst_r2 < 0.) return result;
+        const Point_2 c = CGAL::circumcenter(worst->vertex(0)->point(), worst->vertex(1)->point(), worst->vertex(2)->point());
+
+        // a subsegment whose diametral circle holds it: split it if it may be, else give up the face
+        const Subsegment* hit = nullptr;
+        double hit_l2 = -1.;
+        for(const Subsegment& s : subs)
+        {
+          const Point_2 u = to_2d(f, point(s.u)), v = to_2d(f, point(s.v));
+          const double l2 = CGAL::to_double(CGAL::squared_distance(u, v));
+          if(CGAL::to_double(CGAL::squared_distance(CGAL::midpoint(u, v), c)) < 0.25 * l2 && l2 > hit_l2)
+          {
+            hit = &s;
+            hit_l2 = l2;
+          }
+        }
+        if(hit)
+        {
+          if(soft_[hit->edge] && split(*hit)) { result = 1; rebuild = true; }
+          else given_up.insert(worst_key);
+          continue;
+        }
+        typename CDT::Locate_type lt;
+        int li;
+        const typename CDT::Face_handle at = cdt.locate(c, lt, li, worst);
+        if(lt != CDT::FACE || at->info() != 1) { given_up.insert(worst_key); continue; }
+        const Point_3 q = lift(f, c);
+        const std::size_t nv = cdt.number_of_vertices();
+        const typename CDT::Vertex_handle v = cdt.insert(to_2d(f, q), at);
+        if(cdt.number_of_vertices() != nv + 1) { given_up.insert(worst_key); continue; }
+        v->info() = np_ + extra_.size();
+        extra_.push_back(q);
+        inner_[p].push_back(v->info());
+        // the new faces fill the old ones' place: inside
+        typename CDT::Face_circulator fc = cdt.incident_faces(v), done = fc;
+        do { fc->info() = 1; } while(++fc != done);
+      }
+    }
+  }
+
+  // splits subsegment `s` at its midpoint if that is exactly on the edge; false if not
+  bool split(const Subsegment& s)
+  {
+    const Point_3& a = point(s.u);
+    const Point_3& b = point(s.v);
+    if(CGAL::to_double(CGAL::squared_distance(a, b)) < 4. * min_split_length_ * min_split_length_) return false;
+    const Point_3 m = CGAL::midpoint(a, b);
+    const Point_3& e0 = in_.point(edge_ends_[s.edge][0]);
+    const Point_3& e1 = in_.point(edge_ends_[s.edge][1]);
+    if(!CGAL::collinear(e0, e1, m) || !CGAL::collinear_are_strictly_ordered_along_line(a, m, b)) return false;
+    const std::size_t id = np_ + extra_.size();
+    extra_.push_back(m);
+    const double t = CGAL::to_double((m - e0) * (e1 - e0));
+    std::vector<std::pair<double, std::size_t> >& l = edge_points_[s.edge];
+    l.insert(std::upper_bound(l.begin(), l.end(), std::make_pair(t, id)), std::make_pair(t, id));
+    return true;
+  }
+
+  const Model& in_;
+  const std::size_t np_, nt_;
+  const double sin_bound_;
+  const bool refine_;
+  double min_split_length_ = 0.;
+  std::size_t budget_ = 0;
+
+  std::vector<std::array<std::size_t, 2> > edge_ends_;   // model point ids, first < second
+  std::vector<std::vector<std::size_t> > edge_tris_;     // triangles of each edge
+  std::unordered_map<std::uint64_t, std::size_t> edge_id_;
+  std::vector<std::array<std::size_t, 3> > tri_edges_;   // edge k joins corners k and k+1
+  std::vector<char> free_;                               // inside a piece
+  std::vector<char> soft_;                               // may be split: only axis-plane pieces on it
+
+  std::vector<std::vector<std::size_t> > pieces_;        // their triangles, in the input's order
+  std::vector<std::size_t> piece_of_;                    // of each triangle
+  std::vector<Frame> frames_;                            // of each piece
+
+  std::vector<Point_3> extra_;                           // new points: ids np_, np_ + 1, ...
+  std::vector<std::vector<std::pair<double, std::size_t> > > edge_points_; // new points on each edge, in order
+  std::vector<std::vector<std::size_t> > inner_;         // new points inside each piece
+};
+
+} // namespace internal
+} // namespace Bubble_mesh_3
+} // namespace CGAL
+
+#endif // CGAL_BUBBLE_MESH_3_INTERNAL_PLANAR_PIECES_H
