@@ -477,33 +477,47 @@ private:
       if(!build(p, cdt, subs)) return -1;
       std::set<std::array<std::size_t, 3> > given_up;
       bool rebuild = false;
+      // bad faces a batch at a time, largest circumcircle first (a scan per
+      // insertion would be quadratic on large pieces)
+      struct Bad { double r2; std::array<std::size_t, 3> key; std::array<typename CDT::Vertex_handle, 3> v; };
+      std::vector<Bad> batch;
+      std::size_t next = 0;
       while(!rebuild)
       {
         if(extra_.size() >= budget_) return result;
-        // the bad face with the largest circumcircle
-        typename CDT::Face_handle worst;
-        double worst_r2 = -1.;
-        std::array<std::size_t, 3> worst_key;
-        for(auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh)
+        if(next == batch.size())
         {
-          if(fh->info() != 1) continue;
-          const Point_2& a = fh->vertex(0)->point();
-          const Point_2& b = fh->vertex(1)->point();
-          const Point_2& c = fh->vertex(2)->point();
-          const double la = CGAL::to_double(CGAL::squared_distance(b, c)), lb = CGAL::to_double(CGAL::squared_distance(c, a)),
-                       lc = CGAL::to_double(CGAL::squared_distance(a, b));
-          const double twice_area = std::abs(CGAL::to_double(CGAL::area(a, b, c))) * 2.;
-          // the smallest angle is opposite the shortest side: sin = 2A / (product of the other two)
-          const double shortest = (std::min)({la, lb, lc});
-          const double others = shortest == la ? lb * lc : shortest == lb ? la * lc : la * lb;
-          if(twice_area >= sin_bound_ * std::sqrt(others)) continue;
-          std::array<std::size_t, 3> key = {{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}};
-          std::sort(key.begin(), key.end());
-          if(given_up.count(key)) continue;
-          const double r2 = CGAL::to_double(CGAL::squared_radius(a, b, c));
-          if(r2 > worst_r2 || (r2 == worst_r2 && key < worst_key)) { worst_r2 = r2; worst = fh; worst_key = key; }
+          batch.clear();
+          next = 0;
+          for(auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh)
+          {
+            if(fh->info() != 1) continue;
+            const Point_2& a = fh->vertex(0)->point();
+            const Point_2& b = fh->vertex(1)->point();
+            const Point_2& c = fh->vertex(2)->point();
+            const double la = CGAL::to_double(CGAL::squared_distance(b, c)),
+                         lb = CGAL::to_double(CGAL::squared_distance(c, a)),
+                         lc = CGAL::to_double(CGAL::squared_distance(a, b));
+            const double twice_area = std::abs(CGAL::to_double(CGAL::area(a, b, c))) * 2.;
+            // the smallest angle is opposite the shortest side: sin = 2A / (product of the other two)
+            const double shortest = (std::min)({la, lb, lc});
+            const double others = shortest == la ? lb * lc : shortest == lb ? la * lc : la * lb;
+            if(twice_area >= sin_bound_ * std::sqrt(others)) continue;
+            Bad bad{CGAL::to_double(CGAL::squared_radius(a, b, c)),
+                    {{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}},
+                    {{fh->vertex(0), fh->vertex(1), fh->vertex(2)}}};
+            std::sort(bad.key.begin(), bad.key.end());
+            if(!given_up.count(bad.key)) batch.push_back(bad);
+          }
+          if(batch.empty()) return result;
+          std::sort(batch.begin(), batch.end(), [](const Bad& x, const Bad& y) {
+            return x.r2 != y.r2 ? x.r2 > y.r2 : x.key < y.key;
+          });
         }
-        if(worst_r2 < 0.) return result;
+        const Bad& bad = batch[next++];
+        typename CDT::Face_handle worst;
+        if(!cdt.is_face(bad.v[0], bad.v[1], bad.v[2], worst)) continue; // gone with an insertion
+        const std::array<std::size_t, 3> worst_key = bad.key;
         const Point_2 c = CGAL::circumcenter(worst->vertex(0)->point(), worst->vertex(1)->point(), worst->vertex(2)->point());
 
         // a subsegment whose diametral circle holds it: split it if it may be, else give up the face
