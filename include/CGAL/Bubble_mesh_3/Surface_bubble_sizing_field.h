@@ -164,11 +164,10 @@ public:
       if(rd.radii.empty()) continue;
       rd.r_min = *std::min_element(rd.radii.begin(), rd.radii.end());
       rd.r_max = *std::max_element(rd.radii.begin(), rd.radii.end());
-      // R0 from the 5 % and 95 % quantiles: see place_initial_bubbles()
+      // R0 from the 5 % and 95 % quantiles
       std::vector<double> sorted = rd.radii;
-      std::sort(sorted.begin(), sorted.end());
-      const std::size_t q = (sorted.size() - 1) / 20;
-      rd.r0 = 0.5 * (sorted[q] + sorted[sorted.size() - 1 - q]);
+      const std::pair<double, double> q = internal::quantiles_5_95(sorted);
+      rd.r0 = 0.5 * (q.first + q.second);
       std::vector<std::size_t> keys(rd.centres.size());
       for(std::size_t i = 0; i < keys.size(); ++i) keys[i] = i;
       rd.tree.reset(new Tree(keys.begin(), keys.end(), typename Tree::Splitter(),

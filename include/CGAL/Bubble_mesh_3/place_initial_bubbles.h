@@ -36,6 +36,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -229,12 +230,7 @@ void place_region_bubbles(const Geological_model_3<GeomTraits>& model,
   sizes.reserve(bubble_ids.size());
   for(std::size_t b : bubble_ids) sizes.push_back(sizing(surface_bubbles[b].center, r));
   double s_min = 0., s_max = 0.;
-  if(!sizes.empty())
-  {
-    std::sort(sizes.begin(), sizes.end());
-    s_min = sizes[(sizes.size() - 1) / 20];
-    s_max = sizes[(sizes.size() - 1) - (sizes.size() - 1) / 20];
-  }
+  if(!sizes.empty()) std::tie(s_min, s_max) = internal::quantiles_5_95(sizes);
   const double h = set.cell_edge_factor * 0.5 * (s_min + s_max);
   stats.cell_edge = h;
   if(!(h > 0.) || !std::isfinite(h)) return;

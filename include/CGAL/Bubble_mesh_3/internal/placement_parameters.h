@@ -17,7 +17,9 @@
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -108,6 +110,21 @@ clustering_model(const Clustering& c, const CGAL::Named_function_parameters<T, T
 }
 
 } // namespace parameters
+
+namespace internal {
+
+// The 5 % and 95 % quantiles of `v` (sorted here; not empty): what the
+// placement and the sizing field take for the smallest and largest surface
+// radius, since a few vertices of huge triangles (a box's top given as two
+// triangles) would otherwise set them (bench/README.md, session 6).
+inline std::pair<double, double> quantiles_5_95(std::vector<double>& v)
+{
+  std::sort(v.begin(), v.end());
+  const std::size_t q = (v.size() - 1) / 20;
+  return std::make_pair(v[q], v[v.size() - 1 - q]);
+}
+
+} // namespace internal
 } // namespace Bubble_mesh_3
 } // namespace CGAL
 
