@@ -547,6 +547,37 @@ void test_tilted_grid_box()
 }
 
 
+// the triangles of patch `p`, their vector area (which carries the
+// orientation) and their area
+struct Patch_surface
+{
+  std::vector<std::array<std::size_t, 3> > triangles;
+  Vector_3 vector_area = Vector_3(0, 0, 0);
+  double area = 0.;
+};
+Patch_surface patch_surface(const Model& x, std::size_t p)
+{
+  Patch_surface s;
+  for(std::size_t t = 0; t < x.number_of_triangles(); ++t)
+  {
+    if(x.patch_of_triangle(t) != p) continue;
+    const std::array<std::size_t, 3>& tri = x.triangle(t);
+    const Vector_3 a = 0.5 * CGAL::cross_product(x.point(tri[1]) - x.point(tri[0]), x.point(tri[2]) - x.point(tri[0]));
+    s.vector_area = s.vector_area + a;
+    s.area += std::sqrt(a.squared_length());
+    s.triangles.push_back(tri);
+  }
+  return s;
+}
+
+// patch `p` of `g` covers what it covers in `m`, with the same orientation
+void assert_same_surface(const Model& m, const Model& g, std::size_t p)
+{
+  const Patch_surface a = patch_surface(m, p), b = patch_surface(g, p);
+  assert(std::abs(a.area - b.area) <= 1e-12 * a.area);
+  assert(std::sqrt((a.vector_area - b.vector_area).squared_length()) <= 1e-12 * a.area);
+}
+
 // The unit square times [0, 0.1], one region; patches 0 'bottom' (a grid),
 // 1 'top' and 2 'walls'. With `flat_top` the top is two triangles and each
 // wall a fan from a top corner to the bottom nodes; else the top is a grid
@@ -640,21 +671,20 @@ void test_planar_retriangulation()
   auto sorted = [](Tri t) { std::sort(t.begin(), t.end()); return t; };
   for(std::size_t p = 0; p < m.number_of_patches(); ++p)
   {
-    Vector_3 area_m(0, 0, 0), area_r(0, 0, 0);
-    std::map<std::pair<std::size_t, std::size_t>, int> edges_m, edges_r;
-    auto add = [&](const Model& x, std::size_t t, Vector_3& area, std::map<std::pair<std::size_t, std::size_t>, int>& e) {
-      const Tri& tri = x.triangle(t);
-      area = area + 0.5 * CGAL::cross_product(x.point(tri[1]) - x.point(tri[0]), x.point(tri[2]) - x.point(tri[0]));
-      for(int k = 0; k < 3; ++k)
-        ++e[std::make_pair((std::min)(tri[k], tri[(k + 1) % 3]), (std::max)(tri[k], tri[(k + 1) % 3]))];
+    const Patch_surface sm = patch_surface(m, p), sr = patch_surface(r, p);
+    const std::vector<Tri>& tris_m = sm.triangles;
+    const std::vector<Tri>& tris_r = sr.triangles;
+    auto edges = [](const std::vector<Tri>& tris) {
+      std::map<std::pair<std::size_t, std::size_t>, int> e;
+      for(const Tri& tri : tris)
+        for(int k = 0; k < 3; ++k)
+          ++e[std::make_pair((std::min)(tri[k], tri[(k + 1) % 3]), (std::max)(tri[k], tri[(k + 1) % 3]))];
+      return e;
     };
-    std::vector<Tri> tris_m, tris_r;
-    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
-      if(m.patch_of_triangle(t) == p) { add(m, t, area_m, edges_m); tris_m.push_back(m.triangle(t)); }
-    for(std::size_t t = 0; t < r.number_of_triangles(); ++t)
-      if(r.patch_of_triangle(t) == p) { add(r, t, area_r, edges_r); tris_r.push_back(r.triangle(t)); }
+    const std::map<std::pair<std::size_t, std::size_t>, int> edges_m = edges(tris_m), edges_r = edges(tris_r);
     assert(tris_m.size() == tris_r.size());
-    assert(std::sqrt((area_m - area_r).squared_length()) <= 1e-12 * std::sqrt(area_m.squared_length()) + 1e-15);
+    assert(std::sqrt((sm.vector_area - sr.vector_area).squared_length()) <=
+           1e-12 * std::sqrt(sm.vector_area.squared_length()) + 1e-15);
     auto boundary = [](const std::map<std::pair<std::size_t, std::size_t>, int>& e) {
       std::vector<std::pair<std::size_t, std::size_t> > out;
       for(const auto& x : e)
@@ -721,24 +751,8 @@ void test_planar_retriangulation()
   }
   for(std::size_t p = 0; p < m.number_of_patches(); ++p)
   {
-    // vector area (orientation) and area
-    Vector_3 area_m(0, 0, 0), area_g(0, 0, 0);
-    double size_m = 0., size_g = 0.;
-    std::vector<Tri> tris_m, tris_g;
-    auto add = [&](const Model& x, std::size_t t, Vector_3& area, double& size, std::vector<Tri>& tris) {
-      const Tri& tri = x.triangle(t);
-      const Vector_3 a = 0.5 * CGAL::cross_product(x.point(tri[1]) - x.point(tri[0]), x.point(tri[2]) - x.point(tri[0]));
-      area = area + a;
-      size += std::sqrt(a.squared_length());
-      tris.push_back(tri);
-    };
-    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
-      if(m.patch_of_triangle(t) == p) add(m, t, area_m, size_m, tris_m);
-    for(std::size_t t = 0; t < g.number_of_triangles(); ++t)
-      if(g.patch_of_triangle(t) == p) add(g, t, area_g, size_g, tris_g);
-    assert(std::abs(size_m - size_g) <= 1e-12 * size_m);
-    assert(std::sqrt((area_m - area_g).squared_length()) <= 1e-12 * size_m);
-    if(m.patch(p).name == "bent fault") assert(tris_m == tris_g);
+    assert_same_surface(m, g, p);
+    if(m.patch(p).name == "bent fault") assert(patch_surface(m, p).triangles == patch_surface(g, p).triangles);
   }
   C3T3 fine;
   mesh_and_check("thin box, planar pieces refined", g, inside, fine);
@@ -783,15 +797,7 @@ void test_planar_refinement()
     const Point_3& q = g.point(i);
     assert(q.x() == 0. || q.x() == 1. || q.y() == 0. || q.y() == 1. || q.z() == 0. || q.z() == height);
   }
-  for(std::size_t p : {bottom, top, walls})
-  {
-    double before = 0., after = 0.;
-    for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
-      if(m.patch_of_triangle(t) == p) before += std::sqrt(CGAL::squared_area(m.point(m.triangle(t)[0]), m.point(m.triangle(t)[1]), m.point(m.triangle(t)[2])));
-    for(std::size_t t = 0; t < g.number_of_triangles(); ++t)
-      if(g.patch_of_triangle(t) == p) after += std::sqrt(CGAL::squared_area(g.point(g.triangle(t)[0]), g.point(g.triangle(t)[1]), g.point(g.triangle(t)[2])));
-    assert(std::abs(before - after) <= 1e-12 * before);
-  }
+  for(std::size_t p : {bottom, top, walls}) assert_same_surface(m, g, p);
   const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 0.04, 12);
   C3T3 c3t3;
   mesh_and_check("thin box with a flat top, planar pieces refined", g, inside, c3t3);

@@ -7,6 +7,7 @@
 #define CGAL_BUBBLE_MESH_3_VALIDATE_GEOLOGICAL_MODEL_H
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/union_find.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_error.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 
@@ -104,25 +105,6 @@ private:
 inline std::string count_of(std::size_t n, const char* one, const char* many)
 {
   return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-inline std::size_t uf_find(std::vector<std::size_t>& parent, std::size_t i)
-{
-  while(parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-inline void uf_union(std::vector<std::size_t>& parent, std::size_t a, std::size_t b)
-{
-  a = uf_find(parent, a);
-  b = uf_find(parent, b);
-  // the smaller root wins, so that the result does not depend on the union order
-  if(a < b) parent[b] = a;
-  else if(b < a) parent[a] = b;
 }
 
 template <class GeomTraits>

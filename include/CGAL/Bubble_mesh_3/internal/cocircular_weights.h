@@ -31,6 +31,7 @@
 
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/union_find.h>
 
 #include <algorithm>
 #include <array>
@@ -120,18 +121,9 @@ std::vector<double> cocircular_tie_weights(const Geological_model_3<GeomTraits>&
   };
 
   // connected sets of quads (union-find over their points)
-  std::vector<std::size_t> parent(np);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  std::vector<std::size_t> parent = uf_singletons(np);
   for(const Cocircular_quad& q : quads)
-    for(int k = 1; k < 4; ++k)
-    {
-      const std::size_t r0 = find(q.v[0]), r1 = find(q.v[k]);
-      if(r0 != r1) parent[(std::max)(r0, r1)] = (std::min)(r0, r1);
-    }
+    for(int k = 1; k < 4; ++k) uf_union(parent, q.v[0], q.v[k]);
 
   // per set: the main direction of its wanted diagonals (power iteration on
   // the sum of u u^T, from the first diagonal), and s = squared distance
@@ -143,10 +135,10 @@ std::vector<double> cocircular_tie_weights(const Geological_model_3<GeomTraits>&
   std::vector<std::size_t> roots;
   for(const Cocircular_quad& q : quads)
   {
-    const std::size_t r = find(q.v[0]);
+    const std::size_t r = uf_find(parent, q.v[0]);
     if(slot[r] == none) { slot[r] = roots.size(); roots.push_back(r); }
   }
-  auto set_of = [&](std::size_t v) { return slot[find(v)]; };
+  auto set_of = [&](std::size_t v) { return slot[uf_find(parent, v)]; };
   std::vector<std::array<double, 9> > m(roots.size(), std::array<double, 9>{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
   std::vector<std::array<double, 3> > dir(roots.size(), std::array<double, 3>{{0, 0, 0}});
   for(const Cocircular_quad& q : quads)
@@ -236,14 +228,14 @@ std::vector<double> cocircular_tie_weights(const Geological_model_3<GeomTraits>&
   // of each set weighs zero, like the points of no set
   std::vector<double> lightest(np, std::numeric_limits<double>::infinity());
   for(const Cocircular_quad& q : quads)
-    for(std::size_t v : q.v) lightest[find(v)] = (std::min)(lightest[find(v)], s[v]);
+    for(std::size_t v : q.v) lightest[uf_find(parent, v)] = (std::min)(lightest[uf_find(parent, v)], s[v]);
   double hi = 0.;
   for(const Cocircular_quad& q : quads)
-    for(std::size_t v : q.v) hi = (std::max)(hi, s[v] - lightest[find(v)]);
+    for(std::size_t v : q.v) hi = (std::max)(hi, s[v] - lightest[uf_find(parent, v)]);
   if(!(hi > 0.) || !(shortest2 > 0.) || !std::isfinite(shortest2)) return weights;
   const double scale = std::ldexp(shortest2, -40) / hi;
   for(const Cocircular_quad& q : quads)
-    for(std::size_t v : q.v) weights[v] = (s[v] - lightest[find(v)]) * scale;
+    for(std::size_t v : q.v) weights[v] = (s[v] - lightest[uf_find(parent, v)]) * scale;
   return weights;
 }
 

@@ -18,6 +18,7 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h> // smallest_triangle_angle
+#include <CGAL/Bubble_mesh_3/internal/union_find.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
@@ -191,12 +192,13 @@ private:
 
   void build_edges()
   {
+    std::unordered_map<std::uint64_t, std::size_t> edge_id;
     tri_edges_.resize(nt_);
     for(std::size_t t = 0; t < nt_; ++t)
       for(int k = 0; k < 3; ++k)
       {
         const std::size_t a = in_.triangle(t)[k], b = in_.triangle(t)[(k + 1) % 3];
-        auto ins = edge_id_.emplace(pair_key(a, b), edge_ends_.size());
+        auto ins = edge_id.emplace(pair_key(a, b), edge_ends_.size());
         if(ins.second)
         {
           edge_ends_.push_back({{(std::min)(a, b), (std::max)(a, b)}});
@@ -233,26 +235,19 @@ private:
 
   void build_pieces()
   {
-    std::vector<std::size_t> parent(nt_);
-    for(std::size_t t = 0; t < nt_; ++t) parent[t] = t;
-    auto find = [&](std::size_t t) {
-      while(parent[t] != t) t = parent[t] = parent[parent[t]];
-      return t;
-    };
+    std::vector<std::size_t> parent = uf_singletons(nt_);
     free_.resize(edge_ends_.size());
     for(std::size_t e = 0; e < edge_ends_.size(); ++e)
     {
       free_[e] = is_free(e);
-      if(!free_[e]) continue;
-      const std::size_t r1 = find(edge_tris_[e][0]), r2 = find(edge_tris_[e][1]);
-      if(r1 != r2) parent[(std::max)(r1, r2)] = (std::min)(r1, r2);
+      if(free_[e]) uf_union(parent, edge_tris_[e][0], edge_tris_[e][1]);
     }
     // pieces in the order of their first triangle
     std::vector<std::size_t> piece_of_root(nt_, std::size_t(-1));
     piece_of_.resize(nt_);
     for(std::size_t t = 0; t < nt_; ++t)
     {
-      std::size_t& p = piece_of_root[find(t)];
+      std::size_t& p = piece_of_root[uf_find(parent, t)];
       if(p == std::size_t(-1)) { p = pieces_.size(); pieces_.emplace_back(); }
       pieces_[p].push_back(t);
       piece_of_[t] = p;
@@ -584,7 +579,6 @@ private:
 
   std::vector<std::array<std::size_t, 2> > edge_ends_;   // model point ids, first < second
   std::vector<std::vector<std::size_t> > edge_tris_;     // triangles of each edge
-  std::unordered_map<std::uint64_t, std::size_t> edge_id_;
   std::vector<std::array<std::size_t, 3> > tri_edges_;   // edge k joins corners k and k+1
   std::vector<char> free_;                               // inside a piece
   std::vector<char> soft_;                               // may be split: only axis-plane pieces on it

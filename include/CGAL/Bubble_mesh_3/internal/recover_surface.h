@@ -37,6 +37,7 @@
 // recovered is named in a Tetrahedralization_error.
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/union_find.h>
 #include <CGAL/Bubble_mesh_3/internal/cocircular_weights.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -606,32 +607,26 @@ private:
     for(std::size_t t = 0; t < nt; ++t)
       for(std::size_t v : model_.triangle(t)) point_triangles_[fill[v]++] = t;
 
-    std::vector<std::size_t> parent(nt);
-    for(std::size_t t = 0; t < nt; ++t) parent[t] = t;
-    auto find = [&](std::size_t t) {
-      while(parent[t] != t) t = parent[t] = parent[parent[t]];
-      return t;
-    };
+    std::vector<std::size_t> parent = uf_singletons(nt);
     for(std::size_t v = 0; v < np; ++v)
       for(std::size_t i = point_triangles_start_[v]; i < point_triangles_start_[v + 1]; ++i)
         for(std::size_t j = i + 1; j < point_triangles_start_[v + 1]; ++j)
         {
           const std::size_t t1 = point_triangles_[i], t2 = point_triangles_[j];
-          const std::size_t r1 = find(t1), r2 = find(t2);
-          if(r1 == r2) continue;
+          if(uf_find(parent, t1) == uf_find(parent, t2)) continue;
           const auto& a = model_.triangle(t1);
           bool coplanar = true;
           for(std::size_t x : model_.triangle(t2))
             if(CGAL::orientation(model_.point(a[0]), model_.point(a[1]), model_.point(a[2]), model_.point(x)) !=
                CGAL::COPLANAR)
               coplanar = false;
-          if(coplanar) parent[(std::max)(r1, r2)] = (std::min)(r1, r2);
+          if(coplanar) uf_union(parent, t1, t2);
         }
     plane_group_.assign(nt, 0);
     std::vector<std::size_t> group_of_root(nt, std::size_t(-1));
     for(std::size_t t = 0; t < nt; ++t)
     {
-      std::size_t& g = group_of_root[find(t)];
+      std::size_t& g = group_of_root[uf_find(parent, t)];
       if(g == std::size_t(-1))
       {
         g = group_normal_.size();
