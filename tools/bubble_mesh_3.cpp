@@ -340,7 +340,10 @@ int main(int argc, char** argv)
       std::cout << "sliver removal: tetrahedra with a dihedral angle under " << sr.sliver_bound << " degrees "
                 << sr.number_of_slivers_before << " -> " << sr.number_of_slivers_after << ", smallest dihedral "
                 << sr.min_dihedral_angle_before << " -> " << sr.min_dihedral_angle_after << " degrees ("
-                << sr.number_of_vertices_moved << " bubbles moved)\n";
+                << sr.number_of_vertices_moved << " bubbles moved, "
+                << sr.number_of_2_3_flips + sr.number_of_edge_removals << " flips, "
+                << sr.number_of_vertices_inserted << " vertices inserted; " << sr.time_perturbation << " s, "
+                << sr.time_flips << " s, " << sr.time_insertion << " s)\n";
     BM::IO::write_quality_report_text(std::cout, quality);
   }
 

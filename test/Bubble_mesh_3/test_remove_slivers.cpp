@@ -306,7 +306,8 @@ void test_lattice()
     assert(s.under_bound < s0.under_bound);
     // weights are now set: a re-insertion could hide a neighbour, so no perturbation
     const BM::Sliver_removal_report r2 = BM::remove_slivers(
-      c3t3, BM::parameters::insert_interior_vertices(false, BM::parameters::sliver_bound(bound)));
+      c3t3, BM::parameters::insert_interior_vertices(
+              false, BM::parameters::flip_slivers(false, BM::parameters::sliver_bound(bound))));
     assert(r2.perturbation_skipped_nonzero_weights && !r2.perturbation_done && r2.number_of_moves == 0);
     assert(surface_state(c3t3, bound).region_volumes == s.region_volumes);
     std::cout << "  on the exuded mesh (weights set) the perturbation is skipped, nothing changes" << std::endl;
@@ -332,7 +333,8 @@ void test_lattice()
     C3T3 i(original);
     const BM::Sliver_removal_report ri = BM::remove_slivers(
       i, BM::parameters::perturb_interior_vertices(
-           false, BM::parameters::insert_interior_vertices(true, BM::parameters::sliver_bound(bound))));
+           false, BM::parameters::insert_interior_vertices(
+                    true, BM::parameters::flip_slivers(false, BM::parameters::sliver_bound(bound)))));
     std::cout << ri << std::endl;
     assert(i.triangulation().tds().is_valid());
     check_labels(i);
@@ -350,6 +352,25 @@ void test_lattice()
     assert(again.skipped_not_regular && again.number_of_moves == 0);
     check_labels(i);
     check_kept(si, surface_state(i, bound), "second call on a non-regular triangulation");
+  }
+  // flips alone: no vertex added or moved, the triangulation stays valid,
+  // fewer cells under the bound, a larger smallest angle
+  {
+    C3T3 f(original);
+    const BM::Sliver_removal_report rf = BM::remove_slivers(
+      f, BM::parameters::perturb_interior_vertices(
+           false, BM::parameters::insert_interior_vertices(
+                    false, BM::parameters::flip_slivers(true, BM::parameters::sliver_bound(bound)))));
+    std::cout << rf << std::endl;
+    assert(f.triangulation().tds().is_valid());
+    check_labels(f);
+    const Surface_state sf = surface_state(f, bound);
+    check_kept(s0, sf, "flips only");
+    assert(rf.flips_done && rf.number_of_2_3_flips + rf.number_of_edge_removals > 0);
+    assert(rf.number_of_moves == 0 && rf.number_of_vertices_inserted == 0);
+    assert(f.triangulation().number_of_vertices() == original.triangulation().number_of_vertices());
+    assert(sf.under_bound < s0.under_bound && sf.min_dihedral > s0.min_dihedral);
+    assert(rf.number_of_slivers_after == sf.under_bound && rf.number_of_slivers_after_flips == sf.under_bound);
   }
   BM::remove_slivers(c, BM::parameters::sliver_bound(bound).random_seed(4));
   check_kept(s0, surface_state(c, bound), "another seed");
@@ -484,7 +505,8 @@ void test_model(const std::string& name, const Model& m, bool strict)
               << " vertices, " << original.number_of_cells_in_complex() << " cells (" << pipeline_seconds
               << " s: placement " << pr.time_placement << ", relaxation " << pr.time_relaxation
               << ", tetrahedralization " << pr.time_tetrahedralization << ")" << std::endl;
-    assert(!pr.sliver_removal.perturbation_done && !pr.sliver_removal.insertion_done);
+    assert(!pr.sliver_removal.perturbation_done && !pr.sliver_removal.insertion_done &&
+           !pr.sliver_removal.flips_done);
   }
 
   const double bound = 15.;
@@ -557,6 +579,19 @@ void test_model(const std::string& name, const Model& m, bool strict)
     assert(fa == fb);
     assert(surface_state(again, bound).facets == s.facets);
     std::cout << "  same seed: identical vertices and weights (" << fa.size() << " vertices)" << std::endl;
+
+    // the thin layers' slivers with four surface vertices (two on the top,
+    // two on the bottom) are what the flips are for: without them more stay
+    Model_c3t3 unflipped(original);
+    BM::remove_slivers(unflipped, BM::parameters::flip_slivers(false, BM::parameters::sliver_bound(bound)));
+    check_kept(s0, surface_state(unflipped, bound), "without flips");
+    auto bad_unflipped = cells_under_10(unflipped);
+    const std::size_t on_surfaces = bad1[0].first - bad1[0].second,
+                      on_surfaces_unflipped = bad_unflipped[0].first - bad_unflipped[0].second;
+    std::cout << "  tets under 10 degrees with four surface vertices: " << on_surfaces_unflipped << " without flips, "
+              << on_surfaces << " with (" << r.number_of_2_3_flips << " 2-3 flips, " << r.number_of_edge_removals
+              << " edge removals)" << std::endl;
+    assert(on_surfaces_unflipped > 0 && on_surfaces * 2 <= on_surfaces_unflipped);
 
     // the exuder on this mesh: whatever it does, what must be kept is kept
     Model_c3t3 exuded(original);

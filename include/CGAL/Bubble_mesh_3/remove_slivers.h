@@ -6,6 +6,7 @@
 #ifndef CGAL_BUBBLE_MESH_3_REMOVE_SLIVERS_H
 #define CGAL_BUBBLE_MESH_3_REMOVE_SLIVERS_H
 
+#include <CGAL/Bubble_mesh_3/internal/flip_slivers.h>
 #include <CGAL/Bubble_mesh_3/internal/insert_sliver_vertices.h>
 #include <CGAL/Bubble_mesh_3/internal/perturb_interior_vertices.h>
 #include <CGAL/Bubble_mesh_3/internal/sliver_parameters.h>
@@ -55,11 +56,13 @@ struct Sliver_removal_report
   double min_dihedral_angle_after_perturbation = 0.;      ///< ... after step 1
   double min_dihedral_angle_after_exudation = 0.;         ///< ... after step 2
   double min_dihedral_angle_after_polish = 0.;            ///< ... after step 3
+  double min_dihedral_angle_after_flips = 0.;             ///< ... after the first flips of step 4
   double min_dihedral_angle_after = 0.;                   ///< ... at the end
   std::size_t number_of_slivers_before = 0;               ///< cells under the bound, before
   std::size_t number_of_slivers_after_perturbation = 0;   ///< ... after step 1
   std::size_t number_of_slivers_after_exudation = 0;      ///< ... after step 2
   std::size_t number_of_slivers_after_polish = 0;         ///< ... after step 3
+  std::size_t number_of_slivers_after_flips = 0;          ///< ... after the first flips of step 4
   std::size_t number_of_slivers_after = 0;                ///< ... at the end
 
   bool perturbation_done = false;          ///< step 1 ran
@@ -81,6 +84,9 @@ struct Sliver_removal_report
   bool polish_reverted = false; ///< step 3 ran but broke a check, or did not help, and was undone
   std::string polish_reverted_because; ///< which check, when undone
 
+  bool flips_done = false;                      ///< the flips of step 4 ran
+  std::size_t number_of_2_3_flips = 0;          ///< 2-3 flips kept (two cells sharing a facet made three)
+  std::size_t number_of_edge_removals = 0;      ///< edge removals kept (n cells around an edge made 2n - 4)
   bool insertion_done = false;                  ///< step 4 ran
   /// passes of the interior-vertex insertion
   std::size_t number_of_insertion_passes = 0;
@@ -93,6 +99,8 @@ struct Sliver_removal_report
   double time_perturbation = 0.;
   double time_exudation = 0.;      ///< including the checks and the back-up copy
   double time_polish = 0.;         ///< including the checks and the back-up copy
+  /// seconds spent flipping
+  double time_flips = 0.;
   /// seconds spent inserting interior vertices
   double time_insertion = 0.;
   double time = 0.;                ///< everything
@@ -104,10 +112,11 @@ inline std::ostream& operator<<(std::ostream& os, const Sliver_removal_report& r
   os << "sliver removal (bound " << r.sliver_bound << " degrees): min dihedral " << r.min_dihedral_angle_before
      << " -> " << r.min_dihedral_angle_after_perturbation << " (perturbation) -> "
      << r.min_dihedral_angle_after_exudation << " (exudation) -> " << r.min_dihedral_angle_after_polish
-     << " (polish) -> " << r.min_dihedral_angle_after << " (insertion)\n"
+     << " (polish) -> " << r.min_dihedral_angle_after_flips << " (flips) -> " << r.min_dihedral_angle_after
+     << " (insertion and flips)\n"
      << "  cells under the bound: " << r.number_of_slivers_before << " -> " << r.number_of_slivers_after_perturbation
      << " -> " << r.number_of_slivers_after_exudation << " -> " << r.number_of_slivers_after_polish << " -> "
-     << r.number_of_slivers_after << " (of "
+     << r.number_of_slivers_after_flips << " -> " << r.number_of_slivers_after << " (of "
      << r.number_of_cells_after << " cells)\n"
      << "  perturbation: " << (r.perturbation_done ? "" : "not run, ")
      << (r.perturbation_skipped_nonzero_weights ? "weights not zero, " : "")
@@ -119,11 +128,13 @@ inline std::ostream& operator<<(std::ostream& os, const Sliver_removal_report& r
      << " (code " << int(r.exudation_code) << ")"
      << ", polish: " << (r.polish_done ? "kept" : (r.polish_reverted ? "undone, " + r.polish_reverted_because : "not run"))
      << (r.time_limit_reached ? ", time limit reached" : "") << "\n"
+     << "  flips: " << (r.flips_done ? "" : "not run, ") << r.number_of_2_3_flips << " 2-3 flips, "
+     << r.number_of_edge_removals << " edge removals\n"
      << "  insertion: " << (r.insertion_done ? "" : "not run, ") << r.number_of_insertion_passes << " passes, "
      << r.number_of_slivers_tried << " slivers tried, " << r.number_of_vertices_inserted << " vertices inserted, "
      << r.number_of_slivers_forced << " left at surface angles under 10 degrees\n"
      << "  time (s): perturbation " << r.time_perturbation << ", exudation " << r.time_exudation << ", polish "
-     << r.time_polish << ", insertion " << r.time_insertion << ", total " << r.time;
+     << r.time_polish << ", flips " << r.time_flips << ", insertion " << r.time_insertion << ", total " << r.time;
   return os;
 }
 
@@ -354,8 +365,15 @@ hence region volumes do not change. Four steps:
    longer a regular triangulation**: after it, do not call `exude_mesh_3()`,
    `remove_slivers()` or anything else that needs the empty-sphere property;
    writers and quality measures are fine.
-4. **Insertion** of interior vertices: each cell still under `sliver_bound`,
-   worst first, with the cells around it (one to three rings of neighbours
+4. **Flips and insertion** of interior vertices. First, each cell still
+   under `sliver_bound`, worst first, is flipped away if one of its 2-3 flips
+   (two cells sharing a non-complex facet become three) or edge removals (the
+   3 to 7 cells around an edge that is on no complex facet become a best
+   triangulation of the edge's ring, by dynamic programming) makes cells that
+   beat the ones replaced; the boundary of the replaced cells stays, so
+   complex facets and volumes stay. This removes slivers whose four vertices
+   lie on the top and bottom of a thin layer. Then each cell still under
+   the bound, worst first, with the cells around it (one to three rings of neighbours
    across facets not in the complex, in its region) is replaced by the star
    of a new vertex placed in the kernel of that cavity (its centroid, the
    centroid of the cavity's vertices, and seeded random points around the
@@ -403,6 +421,11 @@ without it (the default), the same input and seed give the same mesh.
     \cgalParamDescription{whether step 3 runs}
     \cgalParamType{bool}
     \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{flip_slivers}
+    \cgalParamDescription{whether the flips of step 4 run (before and after the insertion)}
+    \cgalParamType{bool}
+    \cgalParamDefault{the value of `perturb_interior_vertices`, like `insert_interior_vertices`}
   \cgalParamNEnd
   \cgalParamNBegin{insert_interior_vertices}
     \cgalParamDescription{whether step 4 runs}
@@ -461,6 +484,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   const bool exude = choose_parameter(get_parameter(np, internal_np::exude_slivers), false);
   const bool polish = choose_parameter(get_parameter(np, internal_np::polish_interior), false);
   const bool insert = choose_parameter(get_parameter(np, internal_np::insert_interior_vertices), perturb);
+  const bool flip = choose_parameter(get_parameter(np, internal_np::flip_slivers), perturb);
   const double radius_factor = choose_parameter(get_parameter(np, internal_np::perturbation_radius_factor), 0.3);
   const unsigned int directions =
     choose_parameter(get_parameter(np, internal_np::number_of_perturbation_directions), 8u);
@@ -614,7 +638,29 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   r.min_dihedral_angle_after_polish = r.min_dihedral_angle_after;
   r.number_of_slivers_after_polish = r.number_of_slivers_after;
 
-  // 4. insertion, for what no move reached
+  // 4. flips and insertion, for what no move reached; flips again after the
+  // insertion, whose stars open new ones
+  auto flips = [&]() {
+    if(!flip || r.number_of_slivers_after == 0) return;
+    CGAL::Real_timer timer;
+    timer.start();
+    const double left = limit - total.time();
+    if(left <= 0.) r.time_limit_reached = true;
+    else
+    {
+      internal::Sliver_flipper<C3T3> flipper(c3t3, bound);
+      const internal::Flip_statistics s = flipper(passes, left);
+      r.flips_done = true;
+      r.number_of_2_3_flips += s.number_of_2_3_flips;
+      r.number_of_edge_removals += s.number_of_edge_removals;
+      if(s.time_limit_reached) r.time_limit_reached = true;
+      record(r.min_dihedral_angle_after, r.number_of_slivers_after);
+    }
+    r.time_flips += timer.time();
+  };
+  flips();
+  r.min_dihedral_angle_after_flips = r.min_dihedral_angle_after;
+  r.number_of_slivers_after_flips = r.number_of_slivers_after;
   if(insert && r.number_of_slivers_after > 0)
   {
     CGAL::Real_timer timer;
@@ -634,6 +680,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
       record(r.min_dihedral_angle_after, r.number_of_slivers_after);
     }
     r.time_insertion = timer.time();
+    flips();
   }
 
   r.number_of_cells_after = c3t3.number_of_cells_in_complex();

@@ -128,40 +128,20 @@ public:
     {
       ++stats.number_of_passes;
       const std::size_t before = stats.number_of_vertices_inserted;
-      // cells are destroyed as stars go in; vertices never are, so a sliver is
-      // kept as its vertices and looked up again when its turn comes
-      std::vector<std::pair<double, Cell_vertices> > slivers;
       stats.number_of_slivers_forced = 0;
-      for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c)
-      {
-        const double a = cell_smallest_dihedral_angle(tr_, c);
-        if(!(a < bound_)) continue;
-        const Cell_vertices v = {{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
+      auto take = [&](const Cell_vertices& v) {
         bool forced = false;
         for(int i = 0; i < 4 && !forced; ++i)
           for(int j = i + 1; j < 4 && !forced; ++j) forced = sharp_edges_.count(edge_key(v[i], v[j])) != 0;
         if(forced) ++stats.number_of_slivers_forced;
-        else slivers.push_back(std::make_pair(a, v));
-      }
-      std::stable_sort(slivers.begin(), slivers.end(),
-                       [](const std::pair<double, Cell_vertices>& a, const std::pair<double, Cell_vertices>& b) {
-                         return a.first < b.first;
-                       });
-      std::size_t tried = 0;
-      for(const auto& s : slivers)
-      {
-        if(timer.time() > time_limit)
-        {
-          stats.time_limit_reached = true;
-          break;
-        }
-        Cell_handle c;
-        const Cell_vertices& v = s.second;
-        if(!tr_.is_cell(v[0], v[1], v[2], v[3], c) || !c3t3_.is_in_complex(c)) continue;
-        ++stats.number_of_slivers_tried;
-        ++tried;
+        return !forced;
+      };
+      auto work = [&](Cell_handle c) {
         if(improve(c)) ++stats.number_of_vertices_inserted;
-      }
+      };
+      const std::size_t tried =
+        for_each_sliver_worst_first(c3t3_, bound_, take, work, timer, time_limit, stats.time_limit_reached);
+      stats.number_of_slivers_tried += tried;
       // another pass only while this one paid: on models whose surfaces force
       // most slivers, later passes try thousands of cells for a few stars
       const std::size_t inserted = stats.number_of_vertices_inserted - before;

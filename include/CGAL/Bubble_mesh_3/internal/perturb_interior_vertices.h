@@ -136,6 +136,49 @@ void label_new_cell(C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c,
   }
 }
 
+// One pass over the cells of the complex under `bound`, worst first, for the
+// steps that replace cells (flips, insertion): `take(vertices)` says whether a
+// sliver is worked on, `work(cell)` works on it. Cells die as the pass goes,
+// vertices never: a sliver is kept as its vertices and looked up again when
+// its turn comes. Returns the number of slivers worked on; stops when `timer`
+// passes `time_limit`, and says so in `out_of_time`.
+template <class C3T3, class Take, class Work>
+std::size_t for_each_sliver_worst_first(C3T3& c3t3, double bound, const Take& take, const Work& work,
+                                        const CGAL::Real_timer& timer, double time_limit, bool& out_of_time)
+{
+  typedef typename C3T3::Triangulation::Vertex_handle Vertex_handle;
+  typedef typename C3T3::Triangulation::Cell_handle Cell_handle;
+  typedef std::array<Vertex_handle, 4> Cell_vertices;
+  const auto& tr = c3t3.triangulation();
+  std::vector<std::pair<double, Cell_vertices> > slivers;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    const double a = cell_smallest_dihedral_angle(tr, c);
+    if(!(a < bound)) continue;
+    const Cell_vertices v = {{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
+    if(take(v)) slivers.push_back(std::make_pair(a, v));
+  }
+  std::stable_sort(slivers.begin(), slivers.end(),
+                   [](const std::pair<double, Cell_vertices>& a, const std::pair<double, Cell_vertices>& b) {
+                     return a.first < b.first;
+                   });
+  std::size_t tried = 0;
+  for(const auto& s : slivers)
+  {
+    if(timer.time() > time_limit)
+    {
+      out_of_time = true;
+      break;
+    }
+    Cell_handle c;
+    const Cell_vertices& v = s.second;
+    if(!tr.is_cell(v[0], v[1], v[2], v[3], c) || !c3t3.is_in_complex(c)) continue;
+    ++tried;
+    work(c);
+  }
+  return tried;
+}
+
 /// What the perturbation did.
 struct Perturbation_statistics
 {

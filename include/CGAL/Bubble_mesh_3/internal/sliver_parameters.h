@@ -27,6 +27,7 @@ enum perturb_interior_vertices_t { perturb_interior_vertices };
 enum exude_slivers_t { exude_slivers };
 enum polish_interior_t { polish_interior };
 enum insert_interior_vertices_t { insert_interior_vertices };
+enum flip_slivers_t { flip_slivers };
 enum perturbation_radius_factor_t { perturbation_radius_factor };
 enum number_of_perturbation_directions_t { number_of_perturbation_directions };
 } // namespace internal_np
@@ -55,6 +56,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, polish_interior)
 /// `remove_slivers()`: whether slivers left are replaced by the star of a new interior vertex at the end
 /// (default: the value of `perturb_interior_vertices`)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, insert_interior_vertices)
+/// \ingroup PkgBubbleMesh3Ref
+/// `remove_slivers()`: whether slivers left are flipped away (2-3 flips and edge removals) before and
+/// after the insertion (default: the value of `perturb_interior_vertices`)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, flip_slivers)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: largest move of a vertex, as a fraction of its shortest incident edge
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, perturbation_radius_factor)
