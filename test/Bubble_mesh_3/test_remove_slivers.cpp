@@ -33,6 +33,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -626,8 +627,33 @@ void test_models(int argc, char** argv)
   }
 }
 
+// The angle the steps compare cells by: right on a regular tetrahedron, and
+// near 0 on a nearly flat one in every vertex order (a side test on such a
+// cell once made all its angles 180 degrees, and flips then made flat cells).
+void test_cell_angle()
+{
+  using BM::internal::smallest_dihedral_angle;
+  const BM::internal::Vec3 regular[4] = {{{1., 1., 1.}}, {{1., -1., -1.}}, {{-1., 1., -1.}}, {{-1., -1., 1.}}};
+  assert(std::abs(smallest_dihedral_angle(regular[0], regular[1], regular[2], regular[3]) -
+                  std::acos(1. / 3.) * 180. / CGAL_PI) < 1e-9);
+  // modelA1's flat cell: volume 2e-11 over edges of 300 m
+  const BM::internal::Vec3 flat[4] = {{{-4412.49590249, 5724.21755114, -842.34235328}},
+                                      {{-4409.64161695, 5748.77422006, -843.68463272}},
+                                      {{-4695.37345769, 5726.21949071, -787.48681083}},
+                                      {{-4684.77197266, 5817.42871094, -792.47235107}}};
+  int order[4] = {0, 1, 2, 3};
+  double largest = 0.;
+  do
+  {
+    largest = (std::max)(largest, smallest_dihedral_angle(flat[order[0]], flat[order[1]], flat[order[2]], flat[order[3]]));
+  } while(std::next_permutation(order, order + 4));
+  std::cout << "smallest dihedral angle of a nearly flat cell, largest over its 24 vertex orders: " << largest << std::endl;
+  assert(largest < 1e-3);
+}
+
 int main(int argc, char** argv)
 {
+  test_cell_angle();
   test_lattice();
   test_models(argc, argv);
   return EXIT_SUCCESS;

@@ -62,14 +62,18 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 inline double smallest_dihedral_angle(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3)
 {
   const Vec3* p[4] = {&p0, &p1, &p2, &p3};
-  Vec3 n[4]; // outward area vector of the face opposite vertex k
+  Vec3 n[4]; // area vector of the face opposite vertex k, all outward or all inward
   for(int k = 0; k < 4; ++k)
   {
     const Vec3& a = *p[(k + 1) % 4];
     const Vec3& b = *p[(k + 2) % 4];
     const Vec3& c = *p[(k + 3) % 4];
     n[k] = cross(sub(b, a), sub(c, a));
-    if(dot(n[k], sub(*p[k], a)) > 0.) n[k] = {{-n[k][0], -n[k][1], -n[k][2]}};
+    // (k+1, k+2, k+3) turns the other way for odd k. The sign comes from
+    // that parity, not from a side test, which is noise on a nearly flat
+    // tetrahedron and then made all its angles 180 degrees; flipping all
+    // four normals does not change an angle
+    if(k % 2 == 1) n[k] = {{-n[k][0], -n[k][1], -n[k][2]}};
   }
   double smallest = 180.;
   for(int i = 0; i < 4; ++i)
