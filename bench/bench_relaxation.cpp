@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -94,6 +95,7 @@ struct Step_clock
   double first = -1., last = 0., previous = 0.;
   double step_seconds = 0., between_rounds = 0., before_first = 0.;
   double timed_bubble_steps = 0.;  // over the steps after the warm-up
+  double cpu_first = 0., cpu_last = 0.;  // process CPU time at `first` and `last`
   bool started = false;
 
   Step_clock() { timer.start(); }
@@ -105,13 +107,30 @@ struct Step_clock
       if(!started) { before_first = now; started = true; }
       else if(p.step == 1) between_rounds += now - previous;
       else step_seconds += now - previous;
-      if(p.step == warmup && first < 0.) first = now;
+      if(p.step == warmup && first < 0.) { first = now; cpu_first = cpu_seconds(); }
       if(p.step > warmup) timed_bubble_steps += double(p.population);
       last = now;
+      cpu_last = cpu_seconds();
     }
     previous = now;
   }
 };
+
+// FNV-1a over the bits of the centres and radii: compares results across builds
+std::uint64_t result_hash(const std::vector<Bubble>& bubbles)
+{
+  std::uint64_t h = 1469598103934665603ull;
+  auto add = [&](double v) {
+    std::uint64_t u;
+    std::memcpy(&u, &v, sizeof u);
+    for(int b = 0; b < 8; ++b) { h ^= (u >> (8 * b)) & 0xff; h *= 1099511628211ull; }
+  };
+  for(const Bubble& b : bubbles)
+  {
+    add(b.center.x()); add(b.center.y()); add(b.center.z()); add(b.radius);
+  }
+  return h;
+}
 
 struct Models
 {
@@ -174,12 +193,15 @@ int throughput(double edge_length, std::size_t steps, std::size_t warmup, const 
               << " region-steps, " << rep.bubble_steps << " bubble-steps; steps " << warmup + 1 << " to " << steps << ": "
               << clock.timed_bubble_steps << " bubble-steps in " << step_wall << " s wall -> "
               << std::setprecision(0) << rate << " bubble-steps/s (" << rate / double(threads) << " per thread)"
+              << std::setprecision(3) << ", " << clock.cpu_last - clock.cpu_first << " s CPU -> " << std::setprecision(0)
+              << clock.timed_bubble_steps / (clock.cpu_last - clock.cpu_first) << " per CPU second"
               << std::setprecision(3) << "; whole call " << rep.seconds << " s wall, " << cpu << " s CPU -> "
               << std::setprecision(0) << rep.bubble_steps / rep.seconds << " bubble-steps/s wall, "
               << rep.bubble_steps / cpu << " per CPU second; " << rep.list_rebuilds << " list rebuilds"
               << std::setprecision(2);
     if(threads != thread_counts.front()) std::cout << "; speed-up " << rate / one_thread;
-    std::cout << "; load before: " << load << std::endl;
+    std::cout << "; load before: " << load << "; result hash " << std::hex << result_hash(interior) << std::dec
+              << std::endl;
     if(first_result.empty()) first_result = interior;
     else
     {

@@ -333,9 +333,11 @@ make_bubble_systems(const Geological_model_3<K>& model, const std::vector<Bubble
           double p[3] = {CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z())};
           const double rad = sizing_at<K>(sizing, p[0], p[1], p[2], reg);
           if(!(rad > 0.)) continue;
-          if(s.confinement->place(p, rad) == Confinement_result::REJECTED) continue;
+          const Confinement_result placed = s.confinement->place(p, rad);
+          if(placed == Confinement_result::REJECTED) continue;
           px[k] = p[0]; py[k] = p[1]; pz[k] = p[2];
-          prad[k] = sizing_at<K>(sizing, p[0], p[1], p[2], reg);
+          // a bubble left where it was keeps the radius just read there
+          prad[k] = placed == Confinement_result::UNCHANGED ? rad : sizing_at<K>(sizing, p[0], p[1], p[2], reg);
           pclear[k] = s.confinement->clearance(p, prad[k]);
           ok[k] = prad[k] > 0.;
         }

@@ -314,9 +314,16 @@ private:
       fx += sign * law_(0.) * sum;
   }
 
-  void forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ) const
+  void forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ)
   {
     const double* R = s_.r.data();
+    // x, y, z, r of each bubble side by side: a neighbour is read from one cache line, not four
+    const std::size_t total = s_.size();
+    xyzr_.resize(4 * total);
+    double* P = xyzr_.data();
+    for_each_block<ConcurrencyTag>(total, 4096, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) { P[4 * i] = X[i]; P[4 * i + 1] = Y[i]; P[4 * i + 2] = Z[i]; P[4 * i + 3] = R[i]; }
+    });
     const std::uint32_t* nb = nbr_.data();
     const std::size_t* off = offset_.data();
     const unsigned char* stray = is_stray_.data();
@@ -330,14 +337,16 @@ private:
           for(std::size_t k = off[i]; k < off[i + 1]; ++k)
           {
             const std::size_t j = nb[k];
+            const double* q = P + 4 * j;
             // coincident centres: part them along x, by index
-            add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., fx, fy, fz);
+            add_pair(xi - q[0], yi - q[1], zi - q[2], ri + q[3], i < j ? -1. : 1., fx, fy, fz);
           }
         else if(!stray[i])
           for(std::size_t k = off[i]; k < off[i + 1]; ++k)
           {
             const std::size_t j = nb[k];
-            if(!stray[j]) add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., fx, fy, fz);
+            const double* q = P + 4 * j;
+            if(!stray[j]) add_pair(xi - q[0], yi - q[1], zi - q[2], ri + q[3], i < j ? -1. : 1., fx, fy, fz);
           }
         FX[i] = fx; FY[i] = fy; FZ[i] = fz;
       }
@@ -431,7 +440,7 @@ private:
           const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
           const std::size_t before = out.size();
           double stiff = 0.;
-          grid_.for_each_near_packed(xi, yi, zi, reach * ri, reach, [&](std::size_t j, const double* q) {
+          grid_.for_each_in_reach_packed(xi, yi, zi, reach * ri, reach, [&](std::size_t j, const double* q) {
             if(j == i) return;
             const double dx = q[0] - xi, dy = q[1] - yi, dz = q[2] - zi;
             const double d2 = dx * dx + dy * dy + dz * dz, sum = ri + q[3], lim = reach * sum, cut = cutoff * sum;
@@ -491,6 +500,7 @@ private:
   std::vector<double> ke_, disp_;
   std::vector<double> rx_, ry_, rz_, rr_;                 // positions and radii at the last list rebuild
   std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
+  std::vector<double> xyzr_;                              // forces()'s work space
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> nbr_;
   std::vector<std::uint32_t> strays_;                    // free bubbles beyond their lists' skin, increasing

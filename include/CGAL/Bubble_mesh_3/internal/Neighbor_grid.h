@@ -160,6 +160,33 @@ public:
     });
   }
 
+  /// the same as `for_each_near_packed()`, but skips the cells that lie farther than
+  /// `radius` from `(x,y,z)`: for callers that want only the points of that ball. The
+  /// points are visited in the same order, less those of the cells skipped.
+  template <class F>
+  void for_each_in_ball_packed(double x, double y, double z, double radius, const F& f) const
+  {
+    CGAL_precondition(packed_.size() == 4 * items_.size() && extra_next_.empty());
+    // margins: a point may sit a rounding error outside its cell's bounds
+    const double slack = 1e-6 * cell_size_ + 1e-13 * (std::abs(x) + std::abs(y) + std::abs(z));
+    const double r2 = radius * radius * (1. + 1e-9);
+    const std::size_t y0 = cell_coordinate(y - radius, 1), y1 = cell_coordinate(y + radius, 1);
+    const std::size_t z0 = cell_coordinate(z - radius, 2), z1 = cell_coordinate(z + radius, 2);
+    for(std::size_t k = z0; k <= z1; ++k)
+    {
+      const double gz = gap_to_slab(z, k, 2, slack);
+      for(std::size_t j = y0; j <= y1; ++j)
+      {
+        const double gy = gap_to_slab(y, j, 1, slack), rest = r2 - gz * gz - gy * gy;
+        if(rest < 0.) continue; // the row misses the ball
+        const double w = std::sqrt(rest) + slack;
+        const std::size_t row = (k * dims_[1] + j) * dims_[0];
+        const std::size_t c0 = row + cell_coordinate(x - w, 0), c1 = row + cell_coordinate(x + w, 0);
+        for(Index s = start_[c0]; s < start_[c1 + 1]; ++s) f(std::size_t(items_[s]), &packed_[4 * std::size_t(s)]);
+      }
+    }
+  }
+
   /// the built points in cell order (a cheap spatial sort)
   const std::vector<Index>& items_in_cell_order() const { return items_; }
 
@@ -177,6 +204,17 @@ private:
         const std::size_t row = (k * dims_[1] + j) * dims_[0];
         g(row + x0, row + x1);
       }
+  }
+
+  // distance from v to the slab of cells c along axis d, less `slack`, at least 0; the
+  // border slabs reach to infinity (points outside the box are filed there)
+  double gap_to_slab(double v, std::size_t c, int d, double slack) const
+  {
+    const double lo = origin_[d] + double(c) * cell_size_, hi = lo + cell_size_;
+    double g = 0.;
+    if(c > 0 && v < lo) g = lo - v;
+    else if(c + 1 < dims_[d] && v > hi) g = v - hi;
+    return (std::max)(0., g - slack);
   }
 
   double origin_[3] = {0., 0., 0.};
@@ -265,6 +303,16 @@ public:
     small_grid_.for_each_near_packed(x, y, z, a + b * r_small_, f);
     if(!large_.empty())
       large_grid_.for_each_near_packed(x, y, z, a + b * r_large_, f);
+  }
+
+  /// the same as `for_each_near_packed()` for the balls j with |p - x_j| < a + b * r_j only
+  /// (cells beyond that reach are skipped; the others are visited in the same order)
+  template <class F>
+  void for_each_in_reach_packed(double x, double y, double z, double a, double b, const F& f) const
+  {
+    small_grid_.for_each_in_ball_packed(x, y, z, a + b * r_small_, f);
+    if(!large_.empty())
+      large_grid_.for_each_in_ball_packed(x, y, z, a + b * r_large_, f);
   }
 
   double largest_radius() const { return (std::max)(r_small_, r_large_); }
