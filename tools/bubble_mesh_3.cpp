@@ -312,12 +312,7 @@ int main(int argc, char** argv)
                 << " of the diagonal\n" << std::defaultfloat;
     if(report.planar_patches_retriangulated)
     {
-      std::cout << std::setprecision(4) << "planar pieces: " << pr.number_of_retriangulated_pieces << " of "
-                << pr.number_of_pieces << " re-triangulated, " << pr.number_of_refined_pieces << " with "
-                << pr.number_of_points_added << " new points; their triangles " << pr.number_of_triangles_before
-                << " -> " << pr.number_of_triangles_after << ", under 10 deg " << pr.number_of_small_angle_triangles_before
-                << " -> " << pr.number_of_small_angle_triangles_after << ", smallest angle " << pr.min_angle_before
-                << " -> " << pr.min_angle_after << " deg\n" << std::defaultfloat;
+      std::cout << std::setprecision(4) << "planar pieces: " << pr << "\n" << std::defaultfloat;
     }
     // sliver removal may add interior vertices: count them too, so that the total is the mesh's
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices

@@ -643,10 +643,7 @@ void test_planar_retriangulation()
   const BM::Planar_retriangulation_report report =
     BM::retriangulate_planar_patches(m, r, BM::parameters::planar_angle_bound(0.));
   BM::validate_geological_model(r);
-  std::cout << "planar retriangulation: " << report.number_of_retriangulated_pieces << " of "
-            << report.number_of_pieces << " pieces, " << report.number_of_triangles_before << " -> "
-            << report.number_of_triangles_after << " triangles, smallest angle " << report.min_angle_before << " -> "
-            << report.min_angle_after << " deg" << std::endl;
+  std::cout << "planar retriangulation: " << report << std::endl;
   // bottom, top, four walls; the bent fault has no two coplanar neighbours
   assert(report.number_of_pieces == 6 && report.number_of_retriangulated_pieces == 6);
   assert(report.number_of_points_added == 0 && report.number_of_refined_pieces == 0);
@@ -733,10 +730,7 @@ void test_planar_retriangulation()
   const BM::Planar_retriangulation_report refined =
     BM::retriangulate_planar_patches(m, g, BM::parameters::planar_angle_bound(20.));
   BM::validate_geological_model(g);
-  std::cout << "planar refinement: " << refined.number_of_refined_pieces << " pieces, "
-            << refined.number_of_points_added << " new points, " << refined.number_of_triangles_before << " -> "
-            << refined.number_of_triangles_after << " triangles, smallest angle " << refined.min_angle_before
-            << " -> " << refined.min_angle_after << " deg" << std::endl;
+  std::cout << "planar refinement: " << refined << std::endl;
   assert(refined.number_of_refined_pieces >= 1 && refined.number_of_points_added > 0);
   assert(refined.min_angle_after >= 20. - 1e-9 && report.min_angle_after < 20.); // the bound was needed
   assert(g.number_of_points() == m.number_of_points() + refined.number_of_points_added);
@@ -775,10 +769,7 @@ void test_planar_refinement()
   const BM::Planar_retriangulation_report r =
     BM::retriangulate_planar_patches(m, g, BM::parameters::planar_angle_bound(20.));
   BM::validate_geological_model(g);
-  std::cout << "planar refinement, flat top: " << r.number_of_refined_pieces << " of " << r.number_of_pieces
-            << " pieces, " << r.number_of_points_added << " new points, " << r.number_of_triangles_before << " -> "
-            << r.number_of_triangles_after << " triangles, smallest angle " << r.min_angle_before << " -> "
-            << r.min_angle_after << " deg" << std::endl;
+  std::cout << "planar refinement, flat top: " << r << std::endl;
   assert(r.number_of_pieces == 6 && r.number_of_retriangulated_pieces == 6);
   assert(r.min_angle_before < 10. && r.min_angle_after >= 20. - 1e-9);
   // points on the top's edges (shared with the walls) and inside the top

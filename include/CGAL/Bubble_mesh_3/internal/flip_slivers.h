@@ -141,8 +141,8 @@ private:
     const Vertex_handle p = c->vertex(i), q = n->vertex(n->index(c));
     ch = Change();
     ch.old_cells = {c, n};
-    // (p, f0, f1, f2) is c's order up to sign: vertex_triple_index gives the
-    // facet seen from outside c, i.e. with p on its negative side
+    // the facet's vertices in either turning order: each new cell is tried
+    // both ways round below
     Vertex_handle f[3];
     for(int k = 0; k < 3; ++k) f[k] = c->vertex(Tr::vertex_triple_index(i, k));
     for(int k = 0; k < 3; ++k)
@@ -192,22 +192,22 @@ private:
         if(t != m && h->vertex(t) != a && h->vertex(t) != b) shared = h->vertex(t);
       r[(k + 1) % n] = shared;
     }
-    // the ring turns one way around ab: triangles (r_x, r_y, r_z) with
-    // x < y < z are oriented alike, so each gives the cells (r_x, r_y, r_z, a)
-    // and (r_y, r_x, r_z, b), or both reversed. Which: the existing cell
-    // (r0, r1, a, b) is negative when the ring turns counterclockwise seen
-    // from a, and then (r_x, r_y, r_z, a) is positive
-    const CGAL::Orientation o = tr_.geom_traits().orientation_3_object()(point(r[0]), point(r[1]), point(a), point(b));
-    if(o == CGAL::COPLANAR) return false;
-    const bool forward = o == CGAL::NEGATIVE;
-    // quality of triangle (x, y, z), x < y < z: min over its two cells, -1
-    // if one is not positive. Each triangle is met once by the programme below.
     const auto orientation = tr_.geom_traits().orientation_3_object();
     std::vector<Bare_point> rp(n);
     std::vector<Vec3> rc(n);
     for(std::size_t k = 0; k < n; ++k) { rp[k] = point(r[k]); rc[k] = coordinates(r[k]); }
     const Bare_point ap = point(a), bp = point(b);
     const Vec3 ac = coordinates(a), bc = coordinates(b);
+    // the ring turns one way around ab: triangles (r_x, r_y, r_z) with
+    // x < y < z are oriented alike, so each gives the cells (r_x, r_y, r_z, a)
+    // and (r_y, r_x, r_z, b), or both reversed. Which: the existing cell
+    // (r0, r1, a, b) is negative when the ring turns counterclockwise seen
+    // from a, and then (r_x, r_y, r_z, a) is positive
+    const CGAL::Orientation o = orientation(rp[0], rp[1], ap, bp);
+    if(o == CGAL::COPLANAR) return false;
+    const bool forward = o == CGAL::NEGATIVE;
+    // quality of triangle (x, y, z), x < y < z: min over its two cells, -1
+    // if one is not positive. Each triangle is met once by the programme below.
     auto triangle = [&](std::size_t x, std::size_t y, std::size_t z) -> double {
       const std::size_t u = forward ? x : y, w = forward ? y : x; // (u, w, z, a) and (w, u, z, b)
       if(orientation(rp[u], rp[w], rp[z], ap) != CGAL::POSITIVE ||

@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <set>
@@ -59,6 +60,16 @@ struct Planar_retriangulation_report
   double min_angle_before = 180.;                   ///< smallest triangle angle of the re-triangulated pieces, before
   double min_angle_after = 180.;                    ///< the same, after
 };
+
+/// writes the report in one line
+inline std::ostream& operator<<(std::ostream& os, const Planar_retriangulation_report& r)
+{
+  return os << r.number_of_retriangulated_pieces << " of " << r.number_of_pieces << " re-triangulated, "
+            << r.number_of_refined_pieces << " with " << r.number_of_points_added << " new points; their triangles "
+            << r.number_of_triangles_before << " -> " << r.number_of_triangles_after << ", under 10 deg "
+            << r.number_of_small_angle_triangles_before << " -> " << r.number_of_small_angle_triangles_after
+            << ", smallest angle " << r.min_angle_before << " -> " << r.min_angle_after << " deg";
+}
 
 namespace internal {
 
