@@ -65,6 +65,9 @@ const char* usage_text =
 "  --sliver-bound D           move bubbles of tetrahedra whose smallest dihedral angle\n"
 "                             is under D degrees (default 15); surfaces never move\n"
 "  --no-sliver-removal        keep the tetrahedralization as it is\n"
+"  --keep-steiner-points      sliver removal leaves the Steiner points of the surface\n"
+"                             recovery; by default it collapses them onto neighbours on\n"
+"                             the same input triangles where the tetrahedra get better\n"
 "  --remesh-surfaces          re-mesh the input surfaces with bubbles before meshing the\n"
 "                             volume (for inputs with poor triangles: tiny angles, edge\n"
 "                             lengths spread over orders of magnitude); contact curves,\n"
@@ -101,6 +104,7 @@ struct Options
   std::string summary_json;
   double merge_tolerance = 0.;
   bool sliver_removal = true;
+  bool collapse_steiner_points = true;
   double sliver_bound = 15.;
   bool remesh_surfaces = false;
   bool keep_input_triangles = false;
@@ -146,6 +150,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--summary-json") o.summary_json = value(a);
     else if(a == "--merge-tolerance") o.merge_tolerance = parse_double(a, value(a));
     else if(a == "--no-sliver-removal") o.sliver_removal = false;
+    else if(a == "--keep-steiner-points") o.collapse_steiner_points = false;
     else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
     else if(a == "--remesh-surfaces") o.remesh_surfaces = true;
     else if(a == "--keep-input-triangles") o.keep_input_triangles = true;
@@ -266,11 +271,12 @@ int main(int argc, char** argv)
     const auto np = BM::parameters::stage_callback(progress,
                     BM::parameters::bubble_mesh_report(&report,
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,
+                    BM::parameters::collapse_steiner_points(opt.sliver_removal && opt.collapse_steiner_points,
                     BM::parameters::sliver_bound(opt.sliver_bound,
                     BM::parameters::keep_input_triangles(opt.keep_input_triangles,
                     BM::parameters::planar_angle_bound(opt.planar_angle_bound,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))));
     // the size is a named parameter only when given: its absence selects the default
     if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, np));
     else if(opt.relative_size > 0.)
@@ -291,10 +297,15 @@ int main(int argc, char** argv)
   const std::size_t meshed_triangles =
     report.surfaces_remeshed ? rr.number_of_triangles
                              : model.number_of_triangles() - pr.number_of_triangles_before + pr.number_of_triangles_after;
+  // the sliver removal may have collapsed Steiner points, making triangles whole again
+  const auto& sr = report.sliver_removal;
+  const std::size_t steiner_points = sr.collapses_done ? sr.number_of_steiner_points_left : tr.number_of_steiner_points();
+  const std::size_t kept_whole =
+    sr.collapses_done ? meshed_triangles - sr.number_of_triangles_split : tr.number_of_triangles_kept_whole;
   auto quality = BM::compute_c3t3_quality(c3t3,
-                   BM::parameters::number_of_steiner_points(tr.number_of_steiner_points(),
+                   BM::parameters::number_of_steiner_points(steiner_points,
                    BM::parameters::number_of_input_triangles(meshed_triangles,
-                   BM::parameters::number_of_input_triangles_kept_whole(tr.number_of_triangles_kept_whole))));
+                   BM::parameters::number_of_input_triangles_kept_whole(kept_whole))));
   for(auto& rq : quality.regions)
     if(rq.region >= 1 && std::size_t(rq.region) <= model.number_of_regions())
       rq.name = model.region(std::size_t(rq.region)).name;
@@ -317,12 +328,13 @@ int main(int argc, char** argv)
     // sliver removal may add interior vertices: count them too, so that the total is the mesh's
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices
               << " vertices (" << report.number_of_surface_bubbles << " surface points, "
-              << tr.number_of_interior_points_inserted << " bubbles, " << tr.number_of_steiner_points()
-              << " Steiner points, " << report.sliver_removal.number_of_vertices_inserted
+              << tr.number_of_interior_points_inserted << " bubbles, " << steiner_points
+              << " Steiner points (" << sr.number_of_steiner_points_collapsed << " others collapsed by sliver removal), "
+              << report.sliver_removal.number_of_vertices_inserted
               << " added by sliver removal)\n"
               << (report.surfaces_remeshed ? "re-meshed" : "input") << " triangles kept whole: "
-              << tr.number_of_triangles_kept_whole << " of " << meshed_triangles << " (" << std::setprecision(4)
-              << 100. * tr.share_of_triangles_kept_whole() << " %"
+              << kept_whole << " of " << meshed_triangles << " (" << std::setprecision(4)
+              << 100. * double(kept_whole) / double((std::max)(meshed_triangles, std::size_t(1))) << " %"
               << (report.planar_patches_retriangulated ? "; planar pieces counted re-triangulated" : "") << ")\n"
               << std::defaultfloat
               << "time: " << (report.surfaces_remeshed ? "surface remeshing " + std::to_string(report.time_surface_remeshing) + " s, " : std::string())
@@ -330,15 +342,14 @@ int main(int argc, char** argv)
               << report.time_placement << " s, relaxation " << report.time_relaxation
               << " s, tetrahedralization " << report.time_tetrahedralization << " s, sliver removal "
               << report.time_sliver_removal << " s\n";
-    const auto& sr = report.sliver_removal;
     if(sr.perturbation_done)
       std::cout << "sliver removal: tetrahedra with a dihedral angle under " << sr.sliver_bound << " degrees "
                 << sr.number_of_slivers_before << " -> " << sr.number_of_slivers_after << ", smallest dihedral "
                 << sr.min_dihedral_angle_before << " -> " << sr.min_dihedral_angle_after << " degrees ("
-                << sr.number_of_vertices_moved << " bubbles moved, "
-                << sr.number_of_2_3_flips + sr.number_of_edge_removals << " flips, "
+                << sr.number_of_vertices_moved << " bubbles moved, " << sr.number_of_steiner_points_collapsed
+                << " Steiner points collapsed, " << sr.number_of_2_3_flips + sr.number_of_edge_removals << " flips, "
                 << sr.number_of_vertices_inserted << " vertices inserted; " << sr.time_perturbation << " s, "
-                << sr.time_flips << " s, " << sr.time_insertion << " s)\n";
+                << sr.time_collapses << " s, " << sr.time_flips << " s, " << sr.time_insertion << " s)\n";
     BM::IO::write_quality_report_text(std::cout, quality);
   }
 

@@ -206,7 +206,11 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   std::vector<typename GeomTraits::Point_3> centres;
   centres.reserve(bubbles.size());
   for(const Bubble<GeomTraits>& b : bubbles) centres.push_back(b.center);
-  report->tetrahedralization = tetrahedralize_bubbles(model, centres, c3t3, np);
+  // which surface vertices are Steiner points, and on which input triangles
+  // they lie: the sliver removal may collapse them again
+  Surface_vertex_supports<typename Mesh_complex_3<GeomTraits>::Triangulation> supports;
+  report->tetrahedralization =
+    tetrahedralize_bubbles(model, centres, c3t3, parameters::surface_vertex_supports(&supports, np));
   timer.stop();
   report->time_tetrahedralization = timer.time();
 
@@ -215,7 +219,7 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   start("sliver removal");
   timer.reset();
   timer.start();
-  report->sliver_removal = remove_slivers(c3t3, np);
+  report->sliver_removal = remove_slivers(c3t3, parameters::surface_vertex_supports(&supports, np));
   timer.stop();
   report->time_sliver_removal = timer.time();
   return *report;

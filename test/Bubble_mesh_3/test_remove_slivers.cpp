@@ -475,6 +475,70 @@ std::map<int, std::pair<std::size_t, std::size_t> > cells_under_10(const Model_c
   return count;
 }
 
+// largest distance of a vertex of a complex facet to the input triangle the
+// facet's centroid lies on: 0 up to rounding when every facet lies on one
+// input triangle (a collapse onto the wrong neighbour bends a facet off it)
+double facet_distance_to_input(const Model_c3t3& c3t3, const Input_angles& input)
+{
+  double worst = 0.;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    Point_3 q[3];
+    for(int k = 0, j = 0; k < 4; ++k)
+      if(k != f->second) q[j++] = f->first->vertex(k)->point().point();
+    const auto hit = input.tree.closest_point_and_primitive(CGAL::centroid(q[0], q[1], q[2]));
+    for(const Point_3& p : q) worst = (std::max)(worst, std::sqrt(CGAL::to_double(CGAL::squared_distance(p, *hit.second))));
+  }
+  return worst;
+}
+
+// Steiner points of the recovery collapsed (with the supports the
+// tetrahedralization gives): the surfaces, labels and region volumes stay,
+// every facet stays on its input triangle, and the triangles come back whole
+void test_collapses(const Model& m, const std::vector<Point_3>& interior, const std::map<int, double>& input_areas,
+                    const Input_angles& input, const Surface_state& s0, const Surface_state& without, double bound)
+{
+  BM::Surface_vertex_supports<Model_c3t3::Triangulation> supports;
+  Model_c3t3 c3t3;
+  const BM::Tetrahedralization_report tr =
+    BM::tetrahedralize_bubbles(m, interior, c3t3, BM::parameters::surface_vertex_supports(&supports));
+  assert(tr.number_of_steiner_points() > 0);
+  assert(supports.number_of_steiner_points() == tr.number_of_steiner_points());
+  assert(supports.number_of_triangles_with_steiner_points() == tr.number_of_triangles_split);
+  const BM::Sliver_removal_report r =
+    BM::remove_slivers(c3t3, BM::parameters::surface_vertex_supports(&supports, BM::parameters::sliver_bound(bound)));
+  std::cout << "  with the Steiner points' supports: " << r << std::endl;
+  assert(r.collapses_done && r.number_of_steiner_points_collapsed > 0);
+  assert(r.number_of_steiner_points_left + r.number_of_steiner_points_collapsed == tr.number_of_steiner_points());
+  assert(r.number_of_triangles_split < tr.number_of_triangles_split);
+  assert(c3t3.triangulation().tds().is_valid());
+  check_labels(c3t3);
+  const Surface_state s = surface_state(c3t3, bound);
+  double worst_volume = 0., worst_area = 0.;
+  assert(s.region_volumes.size() == s0.region_volumes.size());
+  for(const auto& rv : s0.region_volumes)
+    worst_volume = (std::max)(worst_volume, std::abs(s.region_volumes.at(rv.first) - rv.second) / rv.second);
+  for(const auto& pa : input_areas)
+    worst_area = (std::max)(worst_area, std::abs(s.patch_areas.at(pa.first) - pa.second) / pa.second);
+  const CGAL::Bbox_3 box = BM::bbox(m);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const double distance = facet_distance_to_input(c3t3, input) / diagonal;
+  std::cout << "  collapses: " << s0.facets.size() << " -> " << s.facets.size() << " complex facets, "
+            << r.number_of_triangles_split << " input triangles still split (" << tr.number_of_triangles_split
+            << " after recovery); largest relative change of a region volume " << worst_volume
+            << ", of a patch area against the input " << worst_area << ", facet vertex off its input triangle "
+            << distance << " of the diagonal; min dihedral " << without.min_dihedral << " -> " << s.min_dihedral
+            << ", cells under 10 degrees " << without.under_10 << " -> " << s.under_10 << ", under the bound "
+            << without.under_bound << " -> " << s.under_bound << " (without -> with collapses)" << std::endl;
+  assert(worst_volume < 1e-9);
+  assert(worst_area < 1e-9);
+  assert(distance < 1e-12);
+  assert(s.facets.size() < s0.facets.size());
+  assert(s.min_dihedral >= s0.min_dihedral);
+  assert(s.under_bound <= s0.under_bound);
+}
+
 // `strict`: the generated model, meshed from initial bubbles (fast); else the
 // whole pipeline without its sliver removal, as the program runs it
 void test_model(const std::string& name, const Model& m, bool strict)
@@ -484,11 +548,11 @@ void test_model(const std::string& name, const Model& m, bool strict)
   timer.start();
   Model_c3t3 original;
   double pipeline_seconds = 0.;
+  std::vector<Point_3> interior;
   if(strict)
   {
     const std::vector<BM::Bubble<K> > sb = BM::place_surface_bubbles(m);
     const std::vector<BM::Bubble<K> > ib = BM::place_initial_bubbles(m, sb, CGAL::parameters::random_seed(1));
-    std::vector<Point_3> interior;
     for(const auto& b : ib) interior.push_back(b.center);
     const BM::Tetrahedralization_report tr = BM::tetrahedralize_bubbles(m, interior, original);
     std::cout << "  " << m.number_of_triangles() << " input triangles, " << interior.size()
@@ -520,6 +584,7 @@ void test_model(const std::string& name, const Model& m, bool strict)
     input_areas[int(m.patch_of_triangle(t)) + 1] += std::sqrt(CGAL::to_double(CGAL::squared_area(p[0], p[1], p[2])));
   }
 
+  const Input_angles angles(m);
   Model_c3t3 c3t3(original);
   timer.reset();
   const BM::Sliver_removal_report r = BM::remove_slivers(c3t3, BM::parameters::sliver_bound(bound));
@@ -544,7 +609,6 @@ void test_model(const std::string& name, const Model& m, bool strict)
   assert(s.under_bound < s0.under_bound);
   assert(s.under_10 < s0.under_10 || (s0.under_10 == 0 && s.under_10 == 0));
 
-  const Input_angles angles(m);
   const BM::Mesh_quality_report q0 =
     BM::compute_c3t3_quality(original, BM::parameters::facet_input_min_angle(std::cref(angles)));
   const BM::Mesh_quality_report q1 =
@@ -593,6 +657,8 @@ void test_model(const std::string& name, const Model& m, bool strict)
               << on_surfaces << " with (" << r.number_of_2_3_flips << " 2-3 flips, " << r.number_of_edge_removals
               << " edge removals)" << std::endl;
     assert(on_surfaces_unflipped > 0 && on_surfaces * 2 <= on_surfaces_unflipped);
+
+    test_collapses(m, interior, input_areas, angles, s0, s, bound);
 
     // the exuder on this mesh: whatever it does, what must be kept is kept
     Model_c3t3 exuded(original);

@@ -6,6 +6,8 @@
 #ifndef CGAL_BUBBLE_MESH_3_REMOVE_SLIVERS_H
 #define CGAL_BUBBLE_MESH_3_REMOVE_SLIVERS_H
 
+#include <CGAL/Bubble_mesh_3/Surface_vertex_supports.h>
+#include <CGAL/Bubble_mesh_3/internal/collapse_steiner_points.h>
 #include <CGAL/Bubble_mesh_3/internal/flip_slivers.h>
 #include <CGAL/Bubble_mesh_3/internal/insert_sliver_vertices.h>
 #include <CGAL/Bubble_mesh_3/internal/perturb_interior_vertices.h>
@@ -84,6 +86,12 @@ struct Sliver_removal_report
   bool polish_reverted = false; ///< step 3 ran but broke a check, or did not help, and was undone
   std::string polish_reverted_because; ///< which check, when undone
 
+  bool collapses_done = false;                  ///< the Steiner-point collapses of step 4 ran
+  /// Steiner points of the recovery collapsed onto a neighbour on the same input triangles
+  std::size_t number_of_steiner_points_collapsed = 0;
+  std::size_t number_of_steiner_points_left = 0; ///< Steiner points of the recovery still in the mesh (when known)
+  /// input triangles still cut by Steiner points (when known): the others are one facet each
+  std::size_t number_of_triangles_split = 0;
   bool flips_done = false;                      ///< the flips of step 4 ran
   std::size_t number_of_2_3_flips = 0;          ///< 2-3 flips kept (two cells sharing a facet made three)
   std::size_t number_of_edge_removals = 0;      ///< edge removals kept (n cells around an edge made 2n - 4)
@@ -99,6 +107,8 @@ struct Sliver_removal_report
   double time_perturbation = 0.;
   double time_exudation = 0.;      ///< including the checks and the back-up copy
   double time_polish = 0.;         ///< including the checks and the back-up copy
+  /// seconds spent collapsing Steiner points
+  double time_collapses = 0.;
   /// seconds spent flipping
   double time_flips = 0.;
   /// seconds spent inserting interior vertices
@@ -128,13 +138,16 @@ inline std::ostream& operator<<(std::ostream& os, const Sliver_removal_report& r
      << " (code " << int(r.exudation_code) << ")"
      << ", polish: " << (r.polish_done ? "kept" : (r.polish_reverted ? "undone, " + r.polish_reverted_because : "not run"))
      << (r.time_limit_reached ? ", time limit reached" : "") << "\n"
+     << "  Steiner points: " << (r.collapses_done ? "" : "collapses not run, ") << r.number_of_steiner_points_collapsed
+     << " collapsed, " << r.number_of_steiner_points_left << " left, on " << r.number_of_triangles_split
+     << " input triangles\n"
      << "  flips: " << (r.flips_done ? "" : "not run, ") << r.number_of_2_3_flips << " 2-3 flips, "
      << r.number_of_edge_removals << " edge removals\n"
      << "  insertion: " << (r.insertion_done ? "" : "not run, ") << r.number_of_insertion_passes << " passes, "
      << r.number_of_slivers_tried << " slivers tried, " << r.number_of_vertices_inserted << " vertices inserted, "
      << r.number_of_slivers_forced << " left at surface angles under 10 degrees\n"
      << "  time (s): perturbation " << r.time_perturbation << ", exudation " << r.time_exudation << ", polish "
-     << r.time_polish << ", flips " << r.time_flips << ", insertion " << r.time_insertion << ", total " << r.time;
+     << r.time_polish << ", collapses " << r.time_collapses << ", flips " << r.time_flips << ", insertion " << r.time_insertion << ", total " << r.time;
   return os;
 }
 
@@ -365,7 +378,18 @@ hence region volumes do not change. Four steps:
    longer a regular triangulation**: after it, do not call `exude_mesh_3()`,
    `remove_slivers()` or anything else that needs the empty-sphere property;
    writers and quality measures are fine.
-4. **Flips and insertion** of interior vertices. First, each cell still
+4. **Steiner points collapsed, flips and insertion** of interior vertices.
+   Given the `surface_vertex_supports` that `tetrahedralize_bubbles()`
+   filled, each Steiner point of the recovery, in recording order, is
+   collapsed onto the neighbour that makes the best cells among those lying
+   on every input triangle the point lies on (the cells around the edge
+   vanish, the others take the neighbour for the point): kept if the result
+   is a triangulation (link condition), every changed cell is positive by the
+   exact predicate, every facet between two regions stays a complex facet,
+   and the changed cells have fewer cells under the bound (none with an angle
+   under the mesh's smallest) or as many and none worse than the old star.
+   Surfaces, patches and region volumes stay; the input triangles the point
+   cut get fewer pieces, often one again. Then each cell still
    under `sliver_bound`, worst first, is flipped away if one of its 2-3 flips
    (two cells sharing a non-complex facet become three) or edge removals (the
    3 to 7 cells around an edge that is on no complex facet become a best
@@ -421,6 +445,18 @@ without it (the default), the same input and seed give the same mesh.
     \cgalParamDescription{whether step 3 runs}
     \cgalParamType{bool}
     \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{surface_vertex_supports}
+    \cgalParamDescription{the Steiner points of the recovery and the input triangles under every surface
+      vertex, as `tetrahedralize_bubbles()` fills them for this mesh; without it no Steiner point is
+      collapsed. Not used after a step 2 or 3 that ran (it may swap in a copy of the triangulation)}
+    \cgalParamType{`Surface_vertex_supports<C3T3::Triangulation>*`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{collapse_steiner_points}
+    \cgalParamDescription{whether step 4 collapses Steiner points (needs `surface_vertex_supports`)}
+    \cgalParamType{bool}
+    \cgalParamDefault{the value of `flip_slivers`}
   \cgalParamNEnd
   \cgalParamNBegin{flip_slivers}
     \cgalParamDescription{whether the flips of step 4 run (before and after the insertion)}
@@ -485,6 +521,9 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   const bool polish = choose_parameter(get_parameter(np, internal_np::polish_interior), false);
   const bool insert = choose_parameter(get_parameter(np, internal_np::insert_interior_vertices), perturb);
   const bool flip = choose_parameter(get_parameter(np, internal_np::flip_slivers), perturb);
+  Surface_vertex_supports<Tr>* const supports =
+    choose_parameter(get_parameter(np, internal_np::surface_vertex_supports), static_cast<Surface_vertex_supports<Tr>*>(nullptr));
+  const bool collapse = supports != nullptr && choose_parameter(get_parameter(np, internal_np::collapse_steiner_points), flip);
   const double radius_factor = choose_parameter(get_parameter(np, internal_np::perturbation_radius_factor), 0.3);
   const unsigned int directions =
     choose_parameter(get_parameter(np, internal_np::number_of_perturbation_directions), 8u);
@@ -638,8 +677,39 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   r.min_dihedral_angle_after_polish = r.min_dihedral_angle_after;
   r.number_of_slivers_after_polish = r.number_of_slivers_after;
 
-  // 4. flips and insertion, for what no move reached; flips again after the
-  // insertion, whose stars open new ones
+  // 4. Steiner points collapsed, flips and insertion, for what no move
+  // reached; flips again after the insertion, whose stars open new ones.
+  // The supports name vertices of this triangulation: not after a step 2 or
+  // 3 that ran (it may have swapped in a copy).
+  auto count_steiner_points = [&]() {
+    r.number_of_steiner_points_left = supports->number_of_steiner_points();
+    r.number_of_triangles_split = supports->number_of_triangles_with_steiner_points();
+  };
+  if(supports) count_steiner_points();
+  const bool may_collapse =
+    collapse && !(r.exudation_done || r.exudation_reverted || r.polish_done || r.polish_reverted);
+  auto collapses = [&]() -> std::size_t {
+    if(!may_collapse || r.number_of_slivers_after == 0) return 0;
+    std::size_t done = 0;
+    CGAL::Real_timer timer;
+    timer.start();
+    const double left = limit - total.time();
+    if(left <= 0.) r.time_limit_reached = true;
+    else
+    {
+      internal::Steiner_point_collapser<C3T3, Surface_vertex_supports<Tr> > collapser(
+        c3t3, *supports, bound, r.min_dihedral_angle_after);
+      const internal::Collapse_statistics s = collapser(passes, left);
+      r.collapses_done = true;
+      r.number_of_steiner_points_collapsed += s.number_of_collapses;
+      done = s.number_of_collapses;
+      count_steiner_points();
+      if(s.time_limit_reached) r.time_limit_reached = true;
+      record(r.min_dihedral_angle_after, r.number_of_slivers_after);
+    }
+    r.time_collapses += timer.time();
+    return done;
+  };
   auto flips = [&]() {
     if(!flip || r.number_of_slivers_after == 0) return;
     CGAL::Real_timer timer;
@@ -658,7 +728,13 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
     }
     r.time_flips += timer.time();
   };
-  flips();
+  // collapses and flips open each other's moves: alternate while collapses pay
+  for(std::size_t round = 0; round < 3; ++round)
+  {
+    const std::size_t collapsed = collapses();
+    flips();
+    if(collapsed == 0) break;
+  }
   r.min_dihedral_angle_after_flips = r.min_dihedral_angle_after;
   r.number_of_slivers_after_flips = r.number_of_slivers_after;
   if(insert && r.number_of_slivers_after > 0)
@@ -680,6 +756,8 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
       record(r.min_dihedral_angle_after, r.number_of_slivers_after);
     }
     r.time_insertion = timer.time();
+    // the new vertices open collapses that were refused before
+    collapses();
     flips();
   }
 

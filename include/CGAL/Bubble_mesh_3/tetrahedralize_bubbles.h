@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/Bubble.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/Mesh_complex_3.h>
+#include <CGAL/Bubble_mesh_3/Surface_vertex_supports.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/internal/label_regions.h>
 #include <CGAL/Bubble_mesh_3/internal/recover_surface.h>
@@ -280,6 +281,12 @@ few percent of the time here anyway.
     \cgalParamType{double}
     \cgalParamDefault{`1e-9`}
   \cgalParamNEnd
+  \cgalParamNBegin{surface_vertex_supports}
+    \cgalParamDescription{filled with the surface vertices of the mesh, which of them are Steiner points,
+      and the input triangles each lies on; hand it to `remove_slivers()` to collapse Steiner points}
+    \cgalParamType{`Surface_vertex_supports<Mesh_complex_3<GeomTraits>::Triangulation>*`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{progress on `std::cout`}
     \cgalParamType{bool}
@@ -378,6 +385,9 @@ tetrahedralize_bubbles(const Geological_model_3<GeomTraits>& model,
   std::vector<std::size_t> patch_of_point(model.number_of_points(), no_index);
   for(std::size_t t = model.number_of_triangles(); t-- > 0;)
     for(std::size_t v : model.triangle(t)) patch_of_point[v] = model.patch_of_triangle(t);
+  Surface_vertex_supports<Tr>* const supports =
+    choose_parameter(get_parameter(np, internal_np::surface_vertex_supports), static_cast<Surface_vertex_supports<Tr>*>(nullptr));
+  if(supports) supports->clear();
   std::vector<Cell_handle> cells;
   for(const auto& r : recovery.records())
   {
@@ -394,6 +404,11 @@ tetrahedralize_bubbles(const Geological_model_3<GeomTraits>& model,
     {
       c3t3.set_dimension(v, 2);
       c3t3.set_index(v, int(patch) + 1);
+      if(supports)
+      {
+        const auto support = recovery.support(std::size_t(&r - recovery.records().data()));
+        supports->add(v, r.kind != internal::Vertex_kind::input_point, support.first, support.second);
+      }
       continue;
     }
     cells.clear();

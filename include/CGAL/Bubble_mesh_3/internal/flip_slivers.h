@@ -40,8 +40,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -276,61 +274,9 @@ private:
     return kind;
   }
 
-  typedef std::array<Vertex_handle, 3> Triple;
-  static Triple sorted(Vertex_handle a, Vertex_handle b, Vertex_handle c)
-  {
-    Triple t{{a, b, c}};
-    std::sort(t.begin(), t.end());
-    return t;
-  }
-
-  // puts the change in: the old cells' outer facets are glued to the new
-  // cells with the same vertices, the new cells among themselves
   void replace(const Change& ch, const Subdomain_index& region)
   {
-    auto& tds = tr_.tds();
-    const std::unordered_set<Cell_handle> old(ch.old_cells.begin(), ch.old_cells.end());
-    std::map<Triple, std::pair<Cell_handle, int> > outside; // facet -> (outer cell, its index)
-    for(Cell_handle h : ch.old_cells)
-      for(int i = 0; i < 4; ++i)
-      {
-        const Cell_handle n = h->neighbor(i);
-        if(old.count(n) != 0) continue;
-        outside[sorted(h->vertex((i + 1) % 4), h->vertex((i + 2) % 4), h->vertex((i + 3) % 4))] =
-          std::make_pair(n, n->index(h));
-      }
-    for(Cell_handle h : ch.old_cells)
-    {
-      c3t3_.remove_from_complex(h);
-      tds.delete_cell(h);
-    }
-    std::map<Triple, std::pair<Cell_handle, int> > inside;
-    std::vector<Cell_handle> made;
-    for(const Cell_vertices& cv : ch.new_cells)
-    {
-      const Cell_handle h = tds.create_cell(cv[0], cv[1], cv[2], cv[3]);
-      made.push_back(h);
-      for(int i = 0; i < 4; ++i)
-      {
-        cv[i]->set_cell(h);
-        const Triple t = sorted(h->vertex((i + 1) % 4), h->vertex((i + 2) % 4), h->vertex((i + 3) % 4));
-        const auto o = outside.find(t);
-        if(o != outside.end())
-        {
-          tds.set_adjacency(h, i, o->second.first, o->second.second);
-          continue;
-        }
-        const auto in = inside.find(t);
-        if(in != inside.end())
-        {
-          tds.set_adjacency(h, i, in->second.first, in->second.second);
-          inside.erase(in);
-        }
-        else inside.emplace(t, std::make_pair(h, i));
-      }
-    }
-    CGAL_assertion(inside.empty());
-    for(Cell_handle h : made) label_new_cell(c3t3_, h, region);
+    replace_cells(c3t3_, ch.old_cells, ch.new_cells, [&](std::size_t) { return region; });
   }
 
   C3T3& c3t3_;

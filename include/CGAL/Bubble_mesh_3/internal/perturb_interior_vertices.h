@@ -38,6 +38,7 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -122,13 +123,14 @@ struct Cell_set_quality
   }
 };
 
-// A new cell of the complex: in `region`; a facet takes the label its
-// neighbour across it carries (that neighbour survived, so its label is right).
+// A new cell: in `region` (outside the complex if that is the default
+// index); a facet takes the label its neighbour across it carries (that
+// neighbour survived, so its label is right).
 template <class C3T3>
 void label_new_cell(C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c,
                     const typename C3T3::Subdomain_index& region)
 {
-  c3t3.add_to_complex(c, region);
+  if(!(region == typename C3T3::Subdomain_index())) c3t3.add_to_complex(c, region);
   for(int i = 0; i < 4; ++i)
   {
     const auto m = c->neighbor(i);
@@ -138,6 +140,76 @@ void label_new_cell(C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c,
     c->set_facet_surface_center(i, m->get_facet_surface_center(mi));
     c->set_facet_surface_center_index(i, m->get_facet_surface_center_index(mi));
   }
+}
+
+// the vertices of a facet, sorted: a key that is the same from both sides
+template <class Vertex_handle>
+std::array<Vertex_handle, 3> sorted_triple(Vertex_handle a, Vertex_handle b, Vertex_handle c)
+{
+  std::array<Vertex_handle, 3> t{{a, b, c}};
+  std::sort(t.begin(), t.end());
+  return t;
+}
+template <class Cell_handle>
+auto facet_key(Cell_handle c, int i) -> std::array<decltype(c->vertex(0)), 3>
+{
+  return sorted_triple(c->vertex((i + 1) % 4), c->vertex((i + 2) % 4), c->vertex((i + 3) % 4));
+}
+
+// Replaces `old_cells` by new cells with the vertices `new_cells` (each
+// positively oriented, together a partition of the old ones): the new cells
+// are glued to the old cells' outer neighbours across facets with the same
+// vertices and to each other, and labelled by `label_new_cell()` with
+// `regions[k]`. Complex facets inside the old cells are the caller's.
+template <class C3T3, class Region_of>
+void replace_cells(C3T3& c3t3, const std::vector<typename C3T3::Triangulation::Cell_handle>& old_cells,
+                   const std::vector<std::array<typename C3T3::Triangulation::Vertex_handle, 4> >& new_cells,
+                   const Region_of& regions)
+{
+  typedef typename C3T3::Triangulation::Cell_handle   Cell_handle;
+  typedef typename C3T3::Triangulation::Vertex_handle Vertex_handle;
+  typedef std::array<Vertex_handle, 3>                Triple;
+  auto& tds = c3t3.triangulation().tds();
+  const std::unordered_set<Cell_handle> old(old_cells.begin(), old_cells.end());
+  std::map<Triple, std::pair<Cell_handle, int> > outside; // facet -> (outer cell, its index)
+  for(Cell_handle h : old_cells)
+    for(int i = 0; i < 4; ++i)
+    {
+      const Cell_handle n = h->neighbor(i);
+      if(old.count(n) == 0) outside[facet_key(h, i)] = std::make_pair(n, n->index(h));
+    }
+  for(Cell_handle h : old_cells)
+  {
+    c3t3.remove_from_complex(h);
+    tds.delete_cell(h);
+  }
+  std::map<Triple, std::pair<Cell_handle, int> > inside;
+  std::vector<Cell_handle> made;
+  for(const auto& cv : new_cells)
+  {
+    const Cell_handle h = tds.create_cell(cv[0], cv[1], cv[2], cv[3]);
+    made.push_back(h);
+    for(int i = 0; i < 4; ++i)
+    {
+      cv[i]->set_cell(h);
+      const Triple t = facet_key(h, i);
+      const auto o = outside.find(t);
+      if(o != outside.end())
+      {
+        tds.set_adjacency(h, i, o->second.first, o->second.second);
+        continue;
+      }
+      const auto in = inside.find(t);
+      if(in != inside.end())
+      {
+        tds.set_adjacency(h, i, in->second.first, in->second.second);
+        inside.erase(in);
+      }
+      else inside.emplace(t, std::make_pair(h, i));
+    }
+  }
+  CGAL_assertion(inside.empty());
+  for(std::size_t k = 0; k < made.size(); ++k) label_new_cell(c3t3, made[k], regions(k));
 }
 
 // One pass over the cells of the complex under `bound`, worst first, for the

@@ -448,6 +448,25 @@ public:
   /// one input triangle having edge `e`
   std::size_t triangle_of_edge(std::size_t e) const { return edge_triangles_[edge_triangles_start_[e]]; }
 
+  /// the input triangles whose closure holds vertex `id` (none for an interior point)
+  std::pair<const std::size_t*, const std::size_t*> support(std::size_t id) const
+  {
+    const Vertex_record& r = records_[id];
+    switch(r.kind)
+    {
+    case Vertex_kind::input_point:
+      return std::make_pair(point_triangles_.data() + point_triangles_start_[r.element],
+                            point_triangles_.data() + point_triangles_start_[r.element + 1]);
+    case Vertex_kind::edge_point:
+      return std::make_pair(edge_triangles_.data() + edge_triangles_start_[r.element],
+                            edge_triangles_.data() + edge_triangles_start_[r.element + 1]);
+    case Vertex_kind::triangle_point:
+      return std::make_pair(&r.element, &r.element + 1);
+    default:
+      return std::make_pair(&r.element, &r.element);
+    }
+  }
+
   Vector_3 triangle_normal(std::size_t t) const
   {
     const auto& tri = model_.triangle(t);

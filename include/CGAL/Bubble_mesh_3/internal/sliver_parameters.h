@@ -28,6 +28,7 @@ enum exude_slivers_t { exude_slivers };
 enum polish_interior_t { polish_interior };
 enum insert_interior_vertices_t { insert_interior_vertices };
 enum flip_slivers_t { flip_slivers };
+enum collapse_steiner_points_t { collapse_steiner_points };
 enum perturbation_radius_factor_t { perturbation_radius_factor };
 enum number_of_perturbation_directions_t { number_of_perturbation_directions };
 } // namespace internal_np
@@ -60,6 +61,11 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, insert_interior_vertices)
 /// `remove_slivers()`: whether slivers left are flipped away (2-3 flips and edge removals) before and
 /// after the insertion (default: the value of `perturb_interior_vertices`)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, flip_slivers)
+/// \ingroup PkgBubbleMesh3Ref
+/// `remove_slivers()`: whether Steiner points of the recovery are collapsed onto a neighbour on the same
+/// input triangles where that improves the cells, before the flips (default: the value of `flip_slivers`;
+/// needs `surface_vertex_supports`)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, collapse_steiner_points)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: largest move of a vertex, as a fraction of its shortest incident edge
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, perturbation_radius_factor)
