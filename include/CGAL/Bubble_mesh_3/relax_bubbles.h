@@ -484,27 +484,48 @@ private:
     inv_mass_.resize(n);
     damping_.resize(n);
     const double cutoff = law_.cutoff();
+    list_sizes_.assign(nb, 0);
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
+      // the pairs within the cutoff of the bubble at hand, in list order: d2 and r_i + r_j
+      std::vector<double> close_d2, close_sum;
       for(std::size_t bk = b0; bk < b1; ++bk)
       {
+        // `out` only grows; its first `used` entries are the block's lists
         std::vector<std::uint32_t>& out = lists[bk];
-        out.clear();
+        std::size_t used = 0;
         for(std::size_t i = bk * block; i < (std::min)(n, (bk + 1) * block); ++i)
         {
           const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
-          const std::size_t before = out.size();
-          double stiff = 0.;
-          grid_.for_each_in_reach_packed(xi, yi, zi, reach * ri, reach, [&](std::size_t j, const double* q) {
-            if(j == i) return;
-            const double dx = q[0] - xi, dy = q[1] - yi, dz = q[2] - zi;
-            const double d2 = dx * dx + dy * dy + dz * dz, sum = ri + q[3], lim = reach * sum, cut = cutoff * sum;
-            if(!(d2 < lim * lim)) return;
-            out.push_back(std::uint32_t(j));
-            if(d2 < cut * cut) stiff += pair_stiffness(std::sqrt(d2) / sum);
+          const std::size_t before = used;
+          std::size_t close = 0;
+          // a row of cells at a time, so that a candidate is kept or dropped without a
+          // branch (about half of them are, at random): room for the whole row first
+          grid_.for_each_row_in_reach_packed(xi, yi, zi, reach * ri, reach,
+                                             [&](const std::uint32_t* items, const double* q, std::size_t count) {
+            if(out.size() < used + count) out.resize(2 * (used + count));
+            if(close_d2.size() < close + count) { close_d2.resize(2 * (close + count)); close_sum.resize(2 * (close + count)); }
+            std::uint32_t* o = out.data() + used;
+            double* cd2 = close_d2.data() + close;
+            double* cs = close_sum.data() + close;
+            std::size_t u = 0, c = 0; // (locals: the stores above cannot move them to memory)
+            for(std::size_t k = 0; k < count; ++k, q += 4)
+            {
+              const std::uint32_t j = items[k];
+              const double dx = q[0] - xi, dy = q[1] - yi, dz = q[2] - zi;
+              const double d2 = dx * dx + dy * dy + dz * dz, sum = ri + q[3], lim = reach * sum, cut = cutoff * sum;
+              const bool in = (d2 < lim * lim) & (j != i);
+              o[u] = j;
+              u += in ? 1 : 0;
+              cd2[c] = d2; cs[c] = sum;
+              c += (in & (d2 < cut * cut)) ? 1 : 0;
+            }
+            used += u;
+            close += c;
           });
-          counts[i] = out.size() - before;
-          scale_mass(i, stiff);
+          counts[i] = used - before;
+          scale_mass(i, stiffness_sum(close_d2.data(), close_sum.data(), close));
         }
+        list_sizes_[bk] = used;
       }
     });
     offset_.assign(n + 1, 0);
@@ -512,9 +533,38 @@ private:
     nbr_.resize(offset_[n]);
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
       for(std::size_t bk = b0; bk < b1; ++bk)
-        if(!lists[bk].empty() && bk * block < n)
-          std::copy(lists[bk].begin(), lists[bk].end(), nbr_.begin() + offset_[bk * block]);
+        if(list_sizes_[bk] > 0)
+          std::copy(lists[bk].begin(), lists[bk].begin() + list_sizes_[bk], nbr_.begin() + offset_[bk * block]);
     });
+  }
+
+  // the sum, in order, of pair_stiffness(sqrt(d2[t]) / sum[t]) over t < n; the square
+  // roots and the divisions are taken two at a time (the same operations, see sum_list())
+  double stiffness_sum(const double* d2, const double* sum, std::size_t n) const
+  {
+    double stiff = 0.;
+    std::size_t t = 0;
+#ifdef __SSE2__
+    const double h = 1e-4, at_h = std::abs(law_(h)) / h;
+    for(; t + 1 < n; t += 2)
+    {
+      const __m128d w = _mm_div_pd(_mm_sqrt_pd(_mm_loadu_pd(d2 + t)), _mm_loadu_pd(sum + t));
+      alignas(16) double wv[2], num[2], den[2], fw[2], slope[2], ratio[2];
+      _mm_store_pd(wv, w);
+      for(int c = 0; c < 2; ++c)
+      {
+        const double lo = (std::max)(0., wv[c] - h);
+        num[c] = std::abs(law_(wv[c] + h) - law_(lo));
+        den[c] = wv[c] + h - lo;
+        fw[c] = std::abs(law_(wv[c]));
+      }
+      _mm_store_pd(slope, _mm_div_pd(_mm_load_pd(num), _mm_load_pd(den)));
+      _mm_store_pd(ratio, _mm_div_pd(_mm_load_pd(fw), w));
+      for(int c = 0; c < 2; ++c) stiff += (std::max)(slope[c], wv[c] > h ? ratio[c] : at_h);
+    }
+#endif
+    for(; t < n; ++t) stiff += pair_stiffness(std::sqrt(d2[t]) / sum[t]);
+    return stiff;
   }
 
   /*
@@ -561,6 +611,7 @@ private:
   std::vector<unsigned char> is_stray_;                  // per bubble (fixed ones never stray)
   std::vector<std::vector<std::uint32_t> > lists_;       // rebuild_lists()'s work space
   std::vector<std::size_t> counts_;
+  std::vector<std::size_t> list_sizes_;                  // entries of lists_[b] in use
   std::size_t rebuilds_ = 0;
   bool follow_sizing_ = true;
 };

@@ -166,6 +166,16 @@ public:
   template <class F>
   void for_each_in_ball_packed(double x, double y, double z, double radius, const F& f) const
   {
+    for_each_row_in_ball_packed(x, y, z, radius, [&](const Index* items, const double* q, std::size_t count) {
+      for(std::size_t s = 0; s < count; ++s) f(std::size_t(items[s]), q + 4 * s);
+    });
+  }
+
+  /// the same visit as `for_each_in_ball_packed()`, a row of cells at a time:
+  /// `g(items, q, count)` for `count` points, `items[s]` at `q + 4 * s`
+  template <class G>
+  void for_each_row_in_ball_packed(double x, double y, double z, double radius, const G& g) const
+  {
     CGAL_precondition(packed_.size() == 4 * items_.size() && extra_next_.empty());
     // margins: a point may sit a rounding error outside its cell's bounds
     const double slack = 1e-6 * cell_size_ + 1e-13 * (std::abs(x) + std::abs(y) + std::abs(z));
@@ -182,7 +192,8 @@ public:
         const double w = std::sqrt(rest) + slack;
         const std::size_t row = (k * dims_[1] + j) * dims_[0];
         const std::size_t c0 = row + cell_coordinate(x - w, 0), c1 = row + cell_coordinate(x + w, 0);
-        for(Index s = start_[c0]; s < start_[c1 + 1]; ++s) f(std::size_t(items_[s]), &packed_[4 * std::size_t(s)]);
+        const Index s0 = start_[c0], s1 = start_[c1 + 1];
+        if(s1 > s0) g(items_.data() + s0, packed_.data() + 4 * std::size_t(s0), std::size_t(s1 - s0));
       }
     }
   }
@@ -313,6 +324,16 @@ public:
     small_grid_.for_each_in_ball_packed(x, y, z, a + b * r_small_, f);
     if(!large_.empty())
       large_grid_.for_each_in_ball_packed(x, y, z, a + b * r_large_, f);
+  }
+
+  /// the same visit as `for_each_in_reach_packed()`, a row of cells at a time (see
+  /// `Neighbor_grid::for_each_row_in_ball_packed()`)
+  template <class G>
+  void for_each_row_in_reach_packed(double x, double y, double z, double a, double b, const G& g) const
+  {
+    small_grid_.for_each_row_in_ball_packed(x, y, z, a + b * r_small_, g);
+    if(!large_.empty())
+      large_grid_.for_each_row_in_ball_packed(x, y, z, a + b * r_large_, g);
   }
 
   double largest_radius() const { return (std::max)(r_small_, r_large_); }
