@@ -331,8 +331,10 @@ private:
   template <bool skip_strays>
   void sum_list(std::size_t i, double xi, double yi, double zi, double ri, const double* P,
                 const std::uint32_t* first, const std::uint32_t* last, const unsigned char* stray,
-                double& fx, double& fy, double& fz) const
+                double& fx_out, double& fy_out, double& fz_out) const
   {
+    // (sums in locals: through the references they would go to memory at every pair)
+    double fx = fx_out, fy = fy_out, fz = fz_out;
     constexpr std::size_t chunk = 64;
     alignas(16) double DX[chunk], DY[chunk], DZ[chunk], S[chunk], D2[chunk], M[chunk];
     std::uint32_t J[chunk];
@@ -349,7 +351,7 @@ private:
         const double d2 = dx * dx + dy * dy + dz * dz, cut = cutoff * sum;
         DX[m] = dx; DY[m] = dy; DZ[m] = dz; S[m] = sum; D2[m] = d2; J[m] = j;
         bool in = d2 < cut * cut;
-        if(skip_strays) in = in && !stray[j];
+        if(skip_strays) in = in & (stray[j] == 0); // (not &&: that is a branch again)
         m += in ? 1 : 0;
       }
       first = stop;
@@ -379,6 +381,7 @@ private:
           fx += (i < J[t] ? -1. : 1.) * law_(0.) * S[t];
       }
     }
+    fx_out = fx; fy_out = fy; fz_out = fz;
   }
 
   void forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ)
