@@ -77,10 +77,12 @@ public:
 
   std::size_t cell_coordinate(double v, int d) const
   {
-    const double c = std::floor((v - origin_[d]) * inverse_cell_size_);
-    if(!(c > 0.)) return 0; // also catches NaN
-    const std::size_t i = static_cast<std::size_t>(c);
-    return (std::min)(i, dims_[d] - 1);
+    // floor(t), clamped to [0, dims - 1]; for t >= 1 the conversion truncates, which
+    // is the floor (and cheaper than a call to it: queries do this a few times a row)
+    const double t = (v - origin_[d]) * inverse_cell_size_;
+    if(!(t >= 1.)) return 0; // also catches NaN
+    if(t >= double(dims_[d])) return dims_[d] - 1;
+    return static_cast<std::size_t>(t);
   }
 
   std::size_t cell_of(double x, double y, double z) const
@@ -182,12 +184,18 @@ public:
     const double r2 = radius * radius * (1. + 1e-9);
     const std::size_t y0 = cell_coordinate(y - radius, 1), y1 = cell_coordinate(y + radius, 1);
     const std::size_t z0 = cell_coordinate(z - radius, 2), z1 = cell_coordinate(z + radius, 2);
+    // the gaps to the slabs along y, once for all z (a query spans a few slabs)
+    constexpr std::size_t few = 16;
+    double gys[few];
+    const bool hoist = y1 - y0 < few;
+    if(hoist)
+      for(std::size_t j = y0; j <= y1; ++j) gys[j - y0] = gap_to_slab(y, j, 1, slack);
     for(std::size_t k = z0; k <= z1; ++k)
     {
       const double gz = gap_to_slab(z, k, 2, slack);
       for(std::size_t j = y0; j <= y1; ++j)
       {
-        const double gy = gap_to_slab(y, j, 1, slack), rest = r2 - gz * gz - gy * gy;
+        const double gy = hoist ? gys[j - y0] : gap_to_slab(y, j, 1, slack), rest = r2 - gz * gz - gy * gy;
         if(rest < 0.) continue; // the row misses the ball
         const double w = std::sqrt(rest) + slack;
         const std::size_t row = (k * dims_[1] + j) * dims_[0];
