@@ -8,6 +8,7 @@
 
 #include <CGAL/Bubble_mesh_3/Bubble.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/Neighbor_grid.h>
 #include <CGAL/Bubble_mesh_3/internal/placement_parameters.h>
 
 #include <CGAL/Fuzzy_sphere.h>
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <limits>
 #include <memory>
@@ -62,9 +64,10 @@ otherwise be interpolated over the whole fine mesh beside them. It and the
 quantiles are deviations from the paper, measured on modelA1 (bench/README.md).
 
 Only surface bubbles whose `surface_point` is a model point are used. Weight
-points are found with a `CGAL::Kd_tree` per region (built in the
-constructor), so a query costs O(log n + number of weight points), and
-concurrent queries are safe. Copies share the trees.
+points are found in a uniform grid per region (cells of half the search
+radius), the graded bound's farther bubbles, when needed, with a
+`CGAL::Kd_tree` per region (both built in the constructor); concurrent
+queries are safe. Copies share the grids and trees.
 
 \cgalModels `BubbleSizingField`
 */
@@ -92,6 +95,10 @@ private:
     std::vector<double> radii;
     double r_min = 0., r_max = 0., r0 = 0.;
     std::unique_ptr<Tree> tree;
+    // the centres in a grid of cells of half the search radius: the weight-point
+    // candidates of a query are a few rows of cells (the tree's walk cost more)
+    internal::Neighbor_grid grid;
+    bool has_grid = false;
   };
 
 public:
@@ -174,6 +181,24 @@ public:
       rd.tree.reset(new Tree(keys.begin(), keys.end(), typename Tree::Splitter(),
                              Traits(Point_map(rd.centres.data()))));
       rd.tree->build(); // built now: later const queries may run concurrently
+      const double range = range_factor_ * (rd.r0 + rd.r_max);
+      if(range > 0. && rd.centres.size() < std::size_t(internal::Neighbor_grid::none))
+      {
+        const std::size_t n = rd.centres.size();
+        std::vector<double> x(n), y(n), z(n);
+        for(std::size_t i = 0; i < n; ++i)
+        {
+          x[i] = CGAL::to_double(rd.centres[i].x());
+          y[i] = CGAL::to_double(rd.centres[i].y());
+          z[i] = CGAL::to_double(rd.centres[i].z());
+        }
+        rd.grid.set_domain(*std::min_element(x.begin(), x.end()), *std::min_element(y.begin(), y.end()),
+                           *std::min_element(z.begin(), z.end()), *std::max_element(x.begin(), x.end()),
+                           *std::max_element(y.begin(), y.end()), *std::max_element(z.begin(), z.end()),
+                           0.5 * range, 4 * n + 64);
+        rd.grid.build(x.data(), y.data(), z.data(), n, nullptr, rd.radii.data());
+        rd.has_grid = true;
+      }
     }
     regions_ = regions;
   }
@@ -213,7 +238,26 @@ private:
   {
     std::vector<std::size_t> near;
     const double range = range_factor_ * (rd.r0 + rd.r_max);
-    rd.tree->search(std::back_inserter(near), Sphere(p, range, 0., rd.tree->traits()));
+    if(rd.has_grid)
+    {
+      // The bubbles within `range`, and maybe a few just beyond it (the margin covers
+      // rounding): those add no weight (they are farther than f (R0 + r_j)) and cannot
+      // lower the graded bound below the interpolated radius where it is read from
+      // `near` (see below), so the result is the tree search's.
+      const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+      const double r2 = range * range * (1. + 1e-9);
+      near.reserve(64);
+      rd.grid.for_each_row_in_ball_packed(x, y, z, range, [&](const std::uint32_t* items, const double* q,
+                                                               std::size_t count) {
+        for(std::size_t k = 0; k < count; ++k, q += 4)
+        {
+          const double dx = q[0] - x, dy = q[1] - y, dz = q[2] - z;
+          if(dx * dx + dy * dy + dz * dz <= r2) near.push_back(items[k]);
+        }
+      });
+    }
+    else
+      rd.tree->search(std::back_inserter(near), Sphere(p, range, 0., rd.tree->traits()));
     std::sort(near.begin(), near.end()); // sums in a fixed order: same input, same bits
 
     double weight_sum = 0., weighted = 0.;

@@ -28,6 +28,10 @@
 #include <utility>
 #include <vector>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace CGAL {
 namespace Bubble_mesh_3 {
 
@@ -314,6 +318,72 @@ private:
       fx += sign * law_(0.) * sum;
   }
 
+  /*
+  The pair forces of bubble i's list [first, last) (pairs with a stray left out
+  when `skip_strays`), added to f in list order: the same sum, bit for bit, as
+  add_pair() over the list. Nearly all the time goes to a square root and two
+  divisions per pair, which one divider does one after the other; so the pairs
+  in reach are first gathered (without a branch: a skin pair is in reach or
+  not at random), then their roots and quotients are taken two at a time in
+  SSE2 registers (the same correctly rounded operations), and the sum follows
+  in list order. A pair out of reach would only add a zero.
+  */
+  template <bool skip_strays>
+  void sum_list(std::size_t i, double xi, double yi, double zi, double ri, const double* P,
+                const std::uint32_t* first, const std::uint32_t* last, const unsigned char* stray,
+                double& fx_out, double& fy_out, double& fz_out) const
+  {
+    // (sums in locals: through the references they would go to memory at every pair)
+    double fx = fx_out, fy = fy_out, fz = fz_out;
+    constexpr std::size_t chunk = 64;
+    alignas(16) double DX[chunk], DY[chunk], DZ[chunk], S[chunk], D2[chunk], M[chunk];
+    std::uint32_t J[chunk];
+    const double cutoff = law_.cutoff();
+    while(first != last)
+    {
+      const std::uint32_t* stop = last - first > std::ptrdiff_t(chunk) ? first + chunk : last;
+      std::size_t m = 0;
+      for(const std::uint32_t* it = first; it != stop; ++it)
+      {
+        const std::uint32_t j = *it;
+        const double* q = P + 4 * std::size_t(j);
+        const double dx = xi - q[0], dy = yi - q[1], dz = zi - q[2], sum = ri + q[3];
+        const double d2 = dx * dx + dy * dy + dz * dz, cut = cutoff * sum;
+        DX[m] = dx; DY[m] = dy; DZ[m] = dz; S[m] = sum; D2[m] = d2; J[m] = j;
+        bool in = d2 < cut * cut;
+        if(skip_strays) in = in & (stray[j] == 0); // (not &&: that is a branch again)
+        m += in ? 1 : 0;
+      }
+      first = stop;
+      std::size_t t = 0;
+#ifdef __SSE2__
+      for(; t + 1 < m; t += 2)
+      {
+        const __m128d l = _mm_sqrt_pd(_mm_load_pd(D2 + t)), sum = _mm_load_pd(S + t);
+        alignas(16) double w[2];
+        _mm_store_pd(w, _mm_div_pd(l, sum));
+        const __m128d f = _mm_set_pd(law_(w[1]), law_(w[0]));
+        _mm_store_pd(M + t, _mm_div_pd(_mm_mul_pd(f, sum), l));
+      }
+#endif
+      for(; t < m; ++t)
+      {
+        const double l = std::sqrt(D2[t]);
+        M[t] = law_(l / S[t]) * S[t] / l;
+      }
+      for(t = 0; t < m; ++t)
+      {
+        if(D2[t] > 1e-24 * S[t] * S[t])
+        {
+          fx += M[t] * DX[t]; fy += M[t] * DY[t]; fz += M[t] * DZ[t];
+        }
+        else // coincident centres (never at rest): part them along x, by index
+          fx += (i < J[t] ? -1. : 1.) * law_(0.) * S[t];
+      }
+    }
+    fx_out = fx; fy_out = fy; fz_out = fz;
+  }
+
   void forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ)
   {
     const double* R = s_.r.data();
@@ -333,21 +403,8 @@ private:
       {
         const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
         double fx = 0., fy = 0., fz = 0.;
-        if(!strays)
-          for(std::size_t k = off[i]; k < off[i + 1]; ++k)
-          {
-            const std::size_t j = nb[k];
-            const double* q = P + 4 * j;
-            // coincident centres: part them along x, by index
-            add_pair(xi - q[0], yi - q[1], zi - q[2], ri + q[3], i < j ? -1. : 1., fx, fy, fz);
-          }
-        else if(!stray[i])
-          for(std::size_t k = off[i]; k < off[i + 1]; ++k)
-          {
-            const std::size_t j = nb[k];
-            const double* q = P + 4 * j;
-            if(!stray[j]) add_pair(xi - q[0], yi - q[1], zi - q[2], ri + q[3], i < j ? -1. : 1., fx, fy, fz);
-          }
+        if(!strays) sum_list<false>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], stray, fx, fy, fz);
+        else if(!stray[i]) sum_list<true>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], stray, fx, fy, fz);
         FX[i] = fx; FY[i] = fy; FZ[i] = fz;
       }
     });
@@ -430,27 +487,48 @@ private:
     inv_mass_.resize(n);
     damping_.resize(n);
     const double cutoff = law_.cutoff();
+    list_sizes_.assign(nb, 0);
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
+      // the pairs within the cutoff of the bubble at hand, in list order: d2 and r_i + r_j
+      std::vector<double> close_d2, close_sum;
       for(std::size_t bk = b0; bk < b1; ++bk)
       {
+        // `out` only grows; its first `used` entries are the block's lists
         std::vector<std::uint32_t>& out = lists[bk];
-        out.clear();
+        std::size_t used = 0;
         for(std::size_t i = bk * block; i < (std::min)(n, (bk + 1) * block); ++i)
         {
           const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
-          const std::size_t before = out.size();
-          double stiff = 0.;
-          grid_.for_each_in_reach_packed(xi, yi, zi, reach * ri, reach, [&](std::size_t j, const double* q) {
-            if(j == i) return;
-            const double dx = q[0] - xi, dy = q[1] - yi, dz = q[2] - zi;
-            const double d2 = dx * dx + dy * dy + dz * dz, sum = ri + q[3], lim = reach * sum, cut = cutoff * sum;
-            if(!(d2 < lim * lim)) return;
-            out.push_back(std::uint32_t(j));
-            if(d2 < cut * cut) stiff += pair_stiffness(std::sqrt(d2) / sum);
+          const std::size_t before = used;
+          std::size_t close = 0;
+          // a row of cells at a time, so that a candidate is kept or dropped without a
+          // branch (about half of them are, at random): room for the whole row first
+          grid_.for_each_row_in_reach_packed(xi, yi, zi, reach * ri, reach,
+                                             [&](const std::uint32_t* items, const double* q, std::size_t count) {
+            if(out.size() < used + count) out.resize(2 * (used + count));
+            if(close_d2.size() < close + count) { close_d2.resize(2 * (close + count)); close_sum.resize(2 * (close + count)); }
+            std::uint32_t* o = out.data() + used;
+            double* cd2 = close_d2.data() + close;
+            double* cs = close_sum.data() + close;
+            std::size_t u = 0, c = 0; // (locals: the stores above cannot move them to memory)
+            for(std::size_t k = 0; k < count; ++k, q += 4)
+            {
+              const std::uint32_t j = items[k];
+              const double dx = q[0] - xi, dy = q[1] - yi, dz = q[2] - zi;
+              const double d2 = dx * dx + dy * dy + dz * dz, sum = ri + q[3], lim = reach * sum, cut = cutoff * sum;
+              const bool in = (d2 < lim * lim) & (j != i);
+              o[u] = j;
+              u += in ? 1 : 0;
+              cd2[c] = d2; cs[c] = sum;
+              c += (in & (d2 < cut * cut)) ? 1 : 0;
+            }
+            used += u;
+            close += c;
           });
-          counts[i] = out.size() - before;
-          scale_mass(i, stiff);
+          counts[i] = used - before;
+          scale_mass(i, stiffness_sum(close_d2.data(), close_sum.data(), close));
         }
+        list_sizes_[bk] = used;
       }
     });
     offset_.assign(n + 1, 0);
@@ -458,9 +536,38 @@ private:
     nbr_.resize(offset_[n]);
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
       for(std::size_t bk = b0; bk < b1; ++bk)
-        if(!lists[bk].empty() && bk * block < n)
-          std::copy(lists[bk].begin(), lists[bk].end(), nbr_.begin() + offset_[bk * block]);
+        if(list_sizes_[bk] > 0)
+          std::copy(lists[bk].begin(), lists[bk].begin() + list_sizes_[bk], nbr_.begin() + offset_[bk * block]);
     });
+  }
+
+  // the sum, in order, of pair_stiffness(sqrt(d2[t]) / sum[t]) over t < n; the square
+  // roots and the divisions are taken two at a time (the same operations, see sum_list())
+  double stiffness_sum(const double* d2, const double* sum, std::size_t n) const
+  {
+    double stiff = 0.;
+    std::size_t t = 0;
+#ifdef __SSE2__
+    const double h = 1e-4, at_h = std::abs(law_(h)) / h;
+    for(; t + 1 < n; t += 2)
+    {
+      const __m128d w = _mm_div_pd(_mm_sqrt_pd(_mm_loadu_pd(d2 + t)), _mm_loadu_pd(sum + t));
+      alignas(16) double wv[2], num[2], den[2], fw[2], slope[2], ratio[2];
+      _mm_store_pd(wv, w);
+      for(int c = 0; c < 2; ++c)
+      {
+        const double lo = (std::max)(0., wv[c] - h);
+        num[c] = std::abs(law_(wv[c] + h) - law_(lo));
+        den[c] = wv[c] + h - lo;
+        fw[c] = std::abs(law_(wv[c]));
+      }
+      _mm_store_pd(slope, _mm_div_pd(_mm_load_pd(num), _mm_load_pd(den)));
+      _mm_store_pd(ratio, _mm_div_pd(_mm_load_pd(fw), w));
+      for(int c = 0; c < 2; ++c) stiff += (std::max)(slope[c], wv[c] > h ? ratio[c] : at_h);
+    }
+#endif
+    for(; t < n; ++t) stiff += pair_stiffness(std::sqrt(d2[t]) / sum[t]);
+    return stiff;
   }
 
   /*
@@ -507,6 +614,7 @@ private:
   std::vector<unsigned char> is_stray_;                  // per bubble (fixed ones never stray)
   std::vector<std::vector<std::uint32_t> > lists_;       // rebuild_lists()'s work space
   std::vector<std::size_t> counts_;
+  std::vector<std::size_t> list_sizes_;                  // entries of lists_[b] in use
   std::size_t rebuilds_ = 0;
   bool follow_sizing_ = true;
 };

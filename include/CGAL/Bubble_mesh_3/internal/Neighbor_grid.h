@@ -77,10 +77,12 @@ public:
 
   std::size_t cell_coordinate(double v, int d) const
   {
-    const double c = std::floor((v - origin_[d]) * inverse_cell_size_);
-    if(!(c > 0.)) return 0; // also catches NaN
-    const std::size_t i = static_cast<std::size_t>(c);
-    return (std::min)(i, dims_[d] - 1);
+    // floor(t), clamped to [0, dims - 1]; for t >= 1 the conversion truncates, which
+    // is the floor (and cheaper than a call to it: queries do this a few times a row)
+    const double t = (v - origin_[d]) * inverse_cell_size_;
+    if(!(t >= 1.)) return 0; // also catches NaN
+    if(t >= double(dims_[d])) return dims_[d] - 1;
+    return static_cast<std::size_t>(t);
   }
 
   std::size_t cell_of(double x, double y, double z) const
@@ -166,23 +168,40 @@ public:
   template <class F>
   void for_each_in_ball_packed(double x, double y, double z, double radius, const F& f) const
   {
+    for_each_row_in_ball_packed(x, y, z, radius, [&](const Index* items, const double* q, std::size_t count) {
+      for(std::size_t s = 0; s < count; ++s) f(std::size_t(items[s]), q + 4 * s);
+    });
+  }
+
+  /// the same visit as `for_each_in_ball_packed()`, a row of cells at a time:
+  /// `g(items, q, count)` for `count` points, `items[s]` at `q + 4 * s`
+  template <class G>
+  void for_each_row_in_ball_packed(double x, double y, double z, double radius, const G& g) const
+  {
     CGAL_precondition(packed_.size() == 4 * items_.size() && extra_next_.empty());
     // margins: a point may sit a rounding error outside its cell's bounds
     const double slack = 1e-6 * cell_size_ + 1e-13 * (std::abs(x) + std::abs(y) + std::abs(z));
     const double r2 = radius * radius * (1. + 1e-9);
     const std::size_t y0 = cell_coordinate(y - radius, 1), y1 = cell_coordinate(y + radius, 1);
     const std::size_t z0 = cell_coordinate(z - radius, 2), z1 = cell_coordinate(z + radius, 2);
+    // the gaps to the slabs along y, once for all z (a query spans a few slabs)
+    constexpr std::size_t few = 16;
+    double gys[few];
+    const bool hoist = y1 - y0 < few;
+    if(hoist)
+      for(std::size_t j = y0; j <= y1; ++j) gys[j - y0] = gap_to_slab(y, j, 1, slack);
     for(std::size_t k = z0; k <= z1; ++k)
     {
       const double gz = gap_to_slab(z, k, 2, slack);
       for(std::size_t j = y0; j <= y1; ++j)
       {
-        const double gy = gap_to_slab(y, j, 1, slack), rest = r2 - gz * gz - gy * gy;
+        const double gy = hoist ? gys[j - y0] : gap_to_slab(y, j, 1, slack), rest = r2 - gz * gz - gy * gy;
         if(rest < 0.) continue; // the row misses the ball
         const double w = std::sqrt(rest) + slack;
         const std::size_t row = (k * dims_[1] + j) * dims_[0];
         const std::size_t c0 = row + cell_coordinate(x - w, 0), c1 = row + cell_coordinate(x + w, 0);
-        for(Index s = start_[c0]; s < start_[c1 + 1]; ++s) f(std::size_t(items_[s]), &packed_[4 * std::size_t(s)]);
+        const Index s0 = start_[c0], s1 = start_[c1 + 1];
+        if(s1 > s0) g(items_.data() + s0, packed_.data() + 4 * std::size_t(s0), std::size_t(s1 - s0));
       }
     }
   }
@@ -313,6 +332,16 @@ public:
     small_grid_.for_each_in_ball_packed(x, y, z, a + b * r_small_, f);
     if(!large_.empty())
       large_grid_.for_each_in_ball_packed(x, y, z, a + b * r_large_, f);
+  }
+
+  /// the same visit as `for_each_in_reach_packed()`, a row of cells at a time (see
+  /// `Neighbor_grid::for_each_row_in_ball_packed()`)
+  template <class G>
+  void for_each_row_in_reach_packed(double x, double y, double z, double a, double b, const G& g) const
+  {
+    small_grid_.for_each_row_in_ball_packed(x, y, z, a + b * r_small_, g);
+    if(!large_.empty())
+      large_grid_.for_each_row_in_ball_packed(x, y, z, a + b * r_large_, g);
   }
 
   double largest_radius() const { return (std::max)(r_small_, r_large_); }

@@ -470,9 +470,11 @@ private:
 
   std::int64_t coordinate(double v, int d) const
   {
-    const double c = std::floor((v - ball_origin_[d]) / ball_cell_size_);
-    if(!(c > -1e18 && c < 1e18)) return 0;
-    return std::int64_t(c);
+    const double t = (v - ball_origin_[d]) / ball_cell_size_;
+    if(!(t > -1e18 && t < 1e18)) return 0;
+    // floor(t) without the libm call (every check of a bubble looks up its cell)
+    const std::int64_t i = std::int64_t(t);
+    return double(i) > t ? i - 1 : i;
   }
 
   void build_ball_grid()
