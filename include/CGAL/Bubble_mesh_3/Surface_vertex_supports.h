@@ -42,6 +42,7 @@ template <class Tr>
 class Surface_vertex_supports
 {
 public:
+  /// the triangulation's vertex handle
   typedef typename Tr::Vertex_handle Vertex_handle;
 
   /// forgets everything
