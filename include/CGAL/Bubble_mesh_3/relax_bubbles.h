@@ -300,6 +300,9 @@ public:
   }
 
 private:
+  // f(w) (r_i + r_j) / l with w = l / (r_i + r_j), the pair force over the distance
+  double force_over_distance(double l, double sum) const { return law_(l / sum) * sum / l; }
+
   // the pair force on a bubble at (dx, dy, dz) = x_i - x_j from j, over the distance, with
   // s = r_i + r_j, added to f; `sign` parts coincident centres reproducibly (by index)
   void add_pair(double dx, double dy, double dz, double sum, double sign, double& fx, double& fy, double& fz) const
@@ -309,9 +312,7 @@ private:
     if(d2 >= cut * cut) return;
     if(d2 > 1e-24 * sum * sum)
     {
-      const double l = std::sqrt(d2);
-      // f(w) (r_i + r_j) / l, the pair force over the distance
-      const double mag = law_(l / sum) * sum / l;
+      const double mag = force_over_distance(std::sqrt(d2), sum);
       fx += mag * dx; fy += mag * dy; fz += mag * dz;
     }
     else
@@ -366,11 +367,7 @@ private:
         _mm_store_pd(M + t, _mm_div_pd(_mm_mul_pd(f, sum), l));
       }
 #endif
-      for(; t < m; ++t)
-      {
-        const double l = std::sqrt(D2[t]);
-        M[t] = law_(l / S[t]) * S[t] / l;
-      }
+      for(; t < m; ++t) M[t] = force_over_distance(std::sqrt(D2[t]), S[t]);
       for(t = 0; t < m; ++t)
       {
         if(D2[t] > 1e-24 * S[t] * S[t])
@@ -548,22 +545,15 @@ private:
     double stiff = 0.;
     std::size_t t = 0;
 #ifdef __SSE2__
-    const double h = 1e-4, at_h = std::abs(law_(h)) / h;
     for(; t + 1 < n; t += 2)
     {
       const __m128d w = _mm_div_pd(_mm_sqrt_pd(_mm_loadu_pd(d2 + t)), _mm_loadu_pd(sum + t));
       alignas(16) double wv[2], num[2], den[2], fw[2], slope[2], ratio[2];
       _mm_store_pd(wv, w);
-      for(int c = 0; c < 2; ++c)
-      {
-        const double lo = (std::max)(0., wv[c] - h);
-        num[c] = std::abs(law_(wv[c] + h) - law_(lo));
-        den[c] = wv[c] + h - lo;
-        fw[c] = std::abs(law_(wv[c]));
-      }
+      for(int c = 0; c < 2; ++c) stiffness_terms(wv[c], num[c], den[c], fw[c]);
       _mm_store_pd(slope, _mm_div_pd(_mm_load_pd(num), _mm_load_pd(den)));
       _mm_store_pd(ratio, _mm_div_pd(_mm_load_pd(fw), w));
-      for(int c = 0; c < 2; ++c) stiff += (std::max)(slope[c], wv[c] > h ? ratio[c] : at_h);
+      for(int c = 0; c < 2; ++c) stiff += stiffness(wv[c], slope[c], ratio[c]);
     }
 #endif
     for(; t < n; ++t) stiff += pair_stiffness(std::sqrt(d2[t]) / sum[t]);
@@ -584,9 +574,26 @@ private:
   // the pair stiffness: the larger of |f'(w)| (central differences: any law) and f(w)/w
   double pair_stiffness(double w) const
   {
-    const double h = 1e-4, lo = (std::max)(0., w - h);
-    const double slope = std::abs(law_(w + h) - law_(lo)) / (w + h - lo);
-    return (std::max)(slope, w > h ? std::abs(law_(w)) / w : std::abs(law_(h)) / h);
+    double num, den, fw;
+    stiffness_terms(w, num, den, fw);
+    return stiffness(w, num / den, w > stiffness_step ? fw / w : 0.);
+  }
+
+  // pair_stiffness() in parts, for stiffness_sum() to take the divisions two at a time:
+  // the slope |f(w + h) - f(w - h)| / 2h is num / den, the secant |f(w)| / w is fw / w
+  static constexpr double stiffness_step = 1e-4;
+  void stiffness_terms(double w, double& num, double& den, double& fw) const
+  {
+    const double h = stiffness_step, lo = (std::max)(0., w - h);
+    num = std::abs(law_(w + h) - law_(lo));
+    den = w + h - lo;
+    fw = std::abs(law_(w));
+  }
+  // the larger of slope and secant; near 0 the secant at h
+  double stiffness(double w, double slope, double secant) const
+  {
+    const double h = stiffness_step;
+    return (std::max)(slope, w > h ? secant : std::abs(law_(h)) / h);
   }
 
   void scale_mass(std::size_t i, double stiffness)

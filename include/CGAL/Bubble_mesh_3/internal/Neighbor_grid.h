@@ -162,19 +162,9 @@ public:
     });
   }
 
-  /// the same as `for_each_near_packed()`, but skips the cells that lie farther than
-  /// `radius` from `(x,y,z)`: for callers that want only the points of that ball. The
-  /// points are visited in the same order, less those of the cells skipped.
-  template <class F>
-  void for_each_in_ball_packed(double x, double y, double z, double radius, const F& f) const
-  {
-    for_each_row_in_ball_packed(x, y, z, radius, [&](const Index* items, const double* q, std::size_t count) {
-      for(std::size_t s = 0; s < count; ++s) f(std::size_t(items[s]), q + 4 * s);
-    });
-  }
-
-  /// the same visit as `for_each_in_ball_packed()`, a row of cells at a time:
-  /// `g(items, q, count)` for `count` points, `items[s]` at `q + 4 * s`
+  /// the visit of `for_each_near_packed()`, less the cells that lie farther than `radius`
+  /// from `(x,y,z)` (for callers that want only the points of that ball), a row of cells
+  /// at a time: `g(items, q, count)` for `count` points, `items[s]` at `q + 4 * s`
   template <class G>
   void for_each_row_in_ball_packed(double x, double y, double z, double radius, const G& g) const
   {
@@ -324,18 +314,9 @@ public:
       large_grid_.for_each_near_packed(x, y, z, a + b * r_large_, f);
   }
 
-  /// the same as `for_each_near_packed()` for the balls j with |p - x_j| < a + b * r_j only
-  /// (cells beyond that reach are skipped; the others are visited in the same order)
-  template <class F>
-  void for_each_in_reach_packed(double x, double y, double z, double a, double b, const F& f) const
-  {
-    small_grid_.for_each_in_ball_packed(x, y, z, a + b * r_small_, f);
-    if(!large_.empty())
-      large_grid_.for_each_in_ball_packed(x, y, z, a + b * r_large_, f);
-  }
-
-  /// the same visit as `for_each_in_reach_packed()`, a row of cells at a time (see
-  /// `Neighbor_grid::for_each_row_in_ball_packed()`)
+  /// the visit of `for_each_near_packed()` for the balls j with |p - x_j| < a + b * r_j only
+  /// (cells beyond that reach are skipped; the others are visited in the same order), a row
+  /// of cells at a time (see `Neighbor_grid::for_each_row_in_ball_packed()`)
   template <class G>
   void for_each_row_in_reach_packed(double x, double y, double z, double a, double b, const G& g) const
   {
