@@ -99,6 +99,19 @@ public:
   }
 
 private:
+  // what a collapse compares: the smallest angle, the cells under the bound,
+  // and the cells under 1 and 5 degrees
+  struct Star_quality : Cell_set_quality
+  {
+    std::size_t flat[2] = {0, 0};
+    void add(double angle, double bound)
+    {
+      Cell_set_quality::add(angle, bound);
+      flat[0] += angle < 1. ? 1 : 0;
+      flat[1] += angle < 5. ? 1 : 0;
+    }
+  };
+
   // the cells v's star becomes when v goes onto u
   struct Plan
   {
@@ -106,8 +119,7 @@ private:
     std::vector<Cell_vertices> cells;
     std::vector<Subdomain_index> labels;
     std::map<Triple, Surface_patch_index> complex_facets; // the new complex facets at u
-    Cell_set_quality made;
-    std::size_t made_flat[2] = {0, 0}; // cells under 1 and 5 degrees
+    Star_quality made;
   };
 
   Bare_point point(Vertex_handle v) const { return tr_.geom_traits().construct_point_3_object()(v->point()); }
@@ -227,13 +239,9 @@ private:
       p.cells.push_back(cv);
       p.labels.push_back(l);
       if(!(l == Subdomain_index()))
-      {
-        const double a = smallest_dihedral_angle(vertex_coordinates(tr_, cv[0]), vertex_coordinates(tr_, cv[1]),
-                                                 vertex_coordinates(tr_, cv[2]), vertex_coordinates(tr_, cv[3]));
-        p.made.add(a, bound_);
-        p.made_flat[0] += a < 1. ? 1 : 0;
-        p.made_flat[1] += a < 5. ? 1 : 0;
-      }
+        p.made.add(smallest_dihedral_angle(vertex_coordinates(tr_, cv[0]), vertex_coordinates(tr_, cv[1]),
+                                           vertex_coordinates(tr_, cv[2]), vertex_coordinates(tr_, cv[3])),
+                   bound_);
     }
     if(!open.empty()) return false; // not a closed star: a facet lost its other side
     return link_condition(v, u, star);
@@ -243,20 +251,13 @@ private:
   {
     std::vector<Cell_handle> star;
     tr_.incident_cells(v, std::back_inserter(star));
-    Cell_set_quality old_star;
-    std::size_t old_flat[2] = {0, 0};
+    Star_quality old_star;
     std::map<Triple, Surface_patch_index> complex_at_v;
     std::vector<Vertex_handle> candidates;
     for(Cell_handle c : star)
     {
       if(tr_.is_infinite(c)) return false;
-      if(c3t3_.is_in_complex(c))
-      {
-        const double a = cell_smallest_dihedral_angle(tr_, c);
-        old_star.add(a, bound_);
-        old_flat[0] += a < 1. ? 1 : 0;
-        old_flat[1] += a < 5. ? 1 : 0;
-      }
+      if(c3t3_.is_in_complex(c)) old_star.add(cell_smallest_dihedral_angle(tr_, c), bound_);
       const int iv = c->index(v);
       for(int i = 0; i < 4; ++i)
       {
@@ -276,7 +277,7 @@ private:
       // under the mesh's smallest angle; or as many, none worse than the
       // worst of the star
       const bool fewer = p.made.under_bound < old_star.under_bound && p.made.min_angle >= floor_ &&
-                         p.made_flat[0] <= old_flat[0] && p.made_flat[1] <= old_flat[1];
+                         p.made.flat[0] <= old_star.flat[0] && p.made.flat[1] <= old_star.flat[1];
       const bool no_worse = p.made.under_bound <= old_star.under_bound && p.made.min_angle >= old_star.min_angle;
       if(!fewer && !no_worse) continue;
       if(found && (p.made.under_bound > best.made.under_bound ||
