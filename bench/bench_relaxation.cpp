@@ -51,7 +51,7 @@ namespace {
 
 const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin S]\n"
-  "       bench_relaxation alpha [MODEL ...] [--threads N]\n"
+  "       bench_relaxation alpha [MODEL ...] [--threads N] [--rounds]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -70,7 +70,8 @@ const char* usage =
   "            relaxation wall and CPU time and where the wall time went (steps,\n"
   "            population passes); bubbles outside their region by\n"
   "            CGAL::Side_of_triangle_mesh; overlap-ratio quantiles, histogram and the\n"
-  "            share inside [10,14].\n";
+  "            share inside [10,14]. --rounds prints a line at the end of every\n"
+  "            population round (region, changes, population, steps, last move).\n";
 
 double cpu_seconds()
 {
@@ -97,11 +98,16 @@ struct Step_clock
   double timed_bubble_steps = 0.;  // over the steps after the warm-up
   double cpu_first = 0., cpu_last = 0.;  // process CPU time at `first` and `last`
   bool started = false;
+  bool print_rounds = false;  // a line at the end of every round (alpha --rounds)
 
   Step_clock() { timer.start(); }
   void operator()(const BM::Relaxation_progress& p)
   {
     const double now = timer.time();
+    if(p.end_of_round && print_rounds)
+      std::cout << "    region " << p.region << " round " << p.round << ": +" << p.added << " -" << p.removed
+                << " -> " << p.population << " bubbles, " << p.step << " steps, last move " << p.max_displacement
+                << " r, at " << now << " s" << std::endl;
     if(!p.end_of_round)
     {
       if(!started) { before_first = now; started = true; }
@@ -222,7 +228,7 @@ double quantile(const std::vector<double>& sorted, double q)
   return sorted[std::size_t(q * double(sorted.size() - 1) + 0.5)];
 }
 
-int alpha_table(const std::vector<std::string>& paths, std::size_t threads)
+int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool print_rounds)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -239,6 +245,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads)
     std::vector<Bubble> interior = BM::place_initial_bubbles(m, surface, sizing);
     const std::size_t placed = interior.size();
     Step_clock clock;
+    clock.print_rounds = print_rounds;
     const std::string load = load_average();
     const double c0 = cpu_seconds();
     const BM::Relaxation_report rep = BM::relax_bubbles(m, surface, interior, sizing,
@@ -322,6 +329,7 @@ int main(int argc, char** argv)
   double skin = 0.15; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
+  bool print_rounds = false;
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -330,6 +338,7 @@ int main(int argc, char** argv)
     else if(a == "--steps" && has_value) steps = std::size_t(std::atol(argv[++i]));
     else if(a == "--warmup" && has_value) warmup = std::size_t(std::atol(argv[++i]));
     else if(a == "--skin" && has_value) skin = std::atof(argv[++i]);
+    else if(a == "--rounds" && alpha) print_rounds = true;
     else if(a == "--threads" && has_value)
     {
       threads.clear();
@@ -354,5 +363,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skin);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front());
+  return alpha_table(models, threads.front(), print_rounds);
 }

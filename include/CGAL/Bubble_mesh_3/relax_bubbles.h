@@ -193,6 +193,7 @@ public:
     f1x_.assign(n, 0.); f1y_.assign(n, 0.); f1z_.assign(n, 0.);
     ke_.assign(n, 0.); disp_.assign(n, 0.);
     follow_sizing_ = true;
+    steps_ = 0;
     CGAL_USE(total);
     rebuild_lists();
     forces(s_.x.data(), s_.y.data(), s_.z.data(), f0x_.data(), f0y_.data(), f0z_.data());
@@ -292,7 +293,10 @@ public:
     // Radii are held once the motion is small: where the sizing field jumps (a
     // surface bubble entering or leaving the weight-point range) a bubble moving
     // across the jump would otherwise swing between two radii for ever.
-    if(sm.second < 10. * st_.tolerance) follow_sizing_ = false;
+    // They are also held after the first steps of a relaxation: where the field
+    // varies fast (a huge input triangle next to small ones) bubbles drifting
+    // into larger sizes grow, push their neighbours on and never come to rest.
+    if(sm.second < 10. * st_.tolerance || ++steps_ >= st_.radius_update_steps) follow_sizing_ = false;
     Figures f;
     f.kinetic_energy = 0.5 * st_.mass * sm.first;
     f.max_displacement = sm.second;
@@ -624,6 +628,7 @@ private:
   std::vector<std::size_t> list_sizes_;                  // entries of lists_[b] in use
   std::size_t rebuilds_ = 0;
   bool follow_sizing_ = true;
+  std::size_t steps_ = 0;  // since the last reset()
 };
 
 // serialises visitor calls coming from regions relaxing at the same time
@@ -685,7 +690,9 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
     p.removed = change.removed;
     p.population = s.n_free;
     rep.converged = false;
-    for(std::size_t k = 1; k <= st.step_budget && s.n_free > 0; ++k)
+    // relaxations between population passes only spread the bubbles out
+    const std::size_t budget = tolerance > st.tolerance ? st.round_step_budget : st.step_budget;
+    for(std::size_t k = 1; k <= budget && s.n_free > 0; ++k)
     {
       const auto f = relaxer.step();
       ++rep.steps;
@@ -781,11 +788,16 @@ motion measured in radii, and the tolerances below, do not depend on the
 units of length. Integration is Heun's predictor-corrector (an explicit Euler
 predictor, a trapezoidal corrector) from zero velocity. Surface bubbles never
 move. Radii follow the sizing field: a bubble's radius is read again each
-time it has moved `radius_update_ratio` of it, until the motion of the
-relaxation falls under ten times its tolerance; then radii are held, since
-where the field jumps (a surface bubble entering or leaving the weight-point
-range) a bubble moving across the jump would otherwise swing between two
-radii for ever. Every population round reads them afresh.
+time it has moved `radius_update_ratio` of it, during the first
+`number_of_radius_update_steps` steps of a relaxation and until its motion
+falls under ten times its tolerance; then radii are held, since where the
+field jumps (a surface bubble entering or leaving the weight-point range) a
+bubble moving across the jump would otherwise swing between two radii for
+ever, and where it grows fast (a huge input triangle beside small ones)
+bubbles drifting into larger sizes grow, push their neighbours on and never
+come to rest (CloudSpin's relaxation took 247 s so, 53 s with the radii held
+and the round budget).
+Every population round reads them afresh.
 
 <b>Defaults.</b> \f$ m = k = 1 \f$ fix the units of time and force, so only
 the ratios matter. The damping \f$ c = 2\sqrt{mk} \f$ is critical for one
@@ -809,9 +821,11 @@ default step stays safe for any start. A move is also capped at
 <b>Convergence.</b> A relaxation stops when the largest move of a bubble in
 one step, over its radius, is under its tolerance, or after
 `number_of_relaxation_steps` steps. While population control still changes the
-population much, relaxations stop at `round_displacement_tolerance`: the
-bubbles only need to spread out before the next pass. Once it settles, they
-go to `displacement_tolerance` and the population is checked once more.
+population much, relaxations stop at `round_displacement_tolerance` or after
+`number_of_round_relaxation_steps`: the bubbles only need to spread out before
+the next pass. Once it settles (or after the last round), they go to
+`displacement_tolerance` within `number_of_relaxation_steps` and the
+population is checked once more.
 
 <b>Confinement.</b> A bubble whose move crosses a surface of its region (its
 boundary, or a surface inside it such as a fault that ends in the body), or
@@ -900,8 +914,13 @@ the end.
     \cgalParamType{`double`} \cgalParamDefault{\f$ 0.2\sqrt{m/k} \f$}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_relaxation_steps}
-    \cgalParamDescription{step budget of one relaxation (there is one per population round)}
+    \cgalParamDescription{step budget of a relaxation to `displacement_tolerance`}
     \cgalParamType{`std::size_t`} \cgalParamDefault{2000}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_round_relaxation_steps}
+    \cgalParamDescription{step budget of a relaxation to `round_displacement_tolerance` (between population
+      passes while the population still changes); more did not change the mesh quality of the models tried}
+    \cgalParamType{`std::size_t`} \cgalParamDefault{300}
   \cgalParamNEnd
   \cgalParamNBegin{displacement_tolerance}
     \cgalParamDescription{the last relaxation has converged when no bubble moves more than this share of its radius in a step}
@@ -953,6 +972,10 @@ the end.
   \cgalParamNBegin{radius_update_ratio}
     \cgalParamDescription{a radius is read again from the sizing field after its bubble moved this share of it}
     \cgalParamType{`double`} \cgalParamDefault{0.1}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_radius_update_steps}
+    \cgalParamDescription{radii follow the sizing field during this many steps of each relaxation, then are held}
+    \cgalParamType{`std::size_t`} \cgalParamDefault{300}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{threads used (a TBB task arena); 0 uses all cores. The result does not depend on it.}

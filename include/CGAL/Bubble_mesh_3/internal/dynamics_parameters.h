@@ -30,6 +30,8 @@ enum damping_t { damping };
 enum stiffness_t { stiffness };
 enum time_step_t { time_step };
 enum number_of_relaxation_steps_t { number_of_relaxation_steps };
+enum number_of_round_relaxation_steps_t { number_of_round_relaxation_steps };
+enum number_of_radius_update_steps_t { number_of_radius_update_steps };
 enum displacement_tolerance_t { displacement_tolerance };
 enum round_displacement_tolerance_t { round_displacement_tolerance };
 enum min_overlap_ratio_t { min_overlap_ratio };
@@ -61,6 +63,8 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, stiffness)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, time_step)
 /// step budget of one relaxation (one per population round; default 2000)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_relaxation_steps)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_round_relaxation_steps)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_radius_update_steps)
 /// convergence: largest displacement in one step over the local radius (default 1e-3)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, displacement_tolerance)
 /// convergence of the relaxations between population passes, looser since more passes follow (default 1e-2)
