@@ -136,12 +136,16 @@ private:
     std::set<Vertex_handle> link_v;
     std::set<std::pair<Vertex_handle, Vertex_handle> > edges_v;
     auto edge = [](Vertex_handle a, Vertex_handle b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); };
+    // the three vertices of c other than x, in cell order
+    auto others = [](Cell_handle c, Vertex_handle x, Vertex_handle (&w)[3]) {
+      int k = 0;
+      for(int i = 0; i < 4; ++i)
+        if(c->vertex(i) != x) w[k++] = c->vertex(i);
+    };
     for(Cell_handle c : star_v)
     {
       Vertex_handle w[3];
-      int k = 0;
-      for(int i = 0; i < 4; ++i)
-        if(c->vertex(i) != v) w[k++] = c->vertex(i);
+      others(c, v, w);
       for(int i = 0; i < 3; ++i)
       {
         if(w[i] != u) link_v.insert(w[i]);
@@ -161,9 +165,7 @@ private:
     for(Cell_handle c : star_u)
     {
       Vertex_handle w[3];
-      int k = 0;
-      for(int i = 0; i < 4; ++i)
-        if(c->vertex(i) != u) w[k++] = c->vertex(i);
+      others(c, u, w);
       for(int i = 0; i < 3; ++i)
       {
         if(w[i] == v) continue;
