@@ -16,6 +16,7 @@
 #include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
 #include <CGAL/Bubble_mesh_3/place_surface_bubbles.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
+#include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Side_of_triangle_mesh.h>
@@ -51,7 +52,7 @@ namespace {
 
 const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin S]\n"
-  "       bench_relaxation alpha [MODEL ...] [--threads N] [--rounds]\n"
+  "       bench_relaxation alpha [MODEL ...] [--threads N] [--rounds] [--remesh-surfaces]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -71,7 +72,9 @@ const char* usage =
   "            population passes); bubbles outside their region by\n"
   "            CGAL::Side_of_triangle_mesh; overlap-ratio quantiles, histogram and the\n"
   "            share inside [10,14]. --rounds prints a line at the end of every\n"
-  "            population round (region, changes, population, steps, last move).\n";
+  "            population round (region, changes, population, steps, last move).\n"
+  "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
+  "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n";
 
 double cpu_seconds()
 {
@@ -228,7 +231,7 @@ double quantile(const std::vector<double>& sorted, double q)
   return sorted[std::size_t(q * double(sorted.size() - 1) + 0.5)];
 }
 
-int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool print_rounds)
+int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool print_rounds, bool remesh)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -239,7 +242,16 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool
   {
     Model m;
     if(!read_model(path, m)) { status = EXIT_FAILURE; continue; }
-    const std::string name = path.substr(path.find_last_of('/') + 1);
+    std::string name = path.substr(path.find_last_of('/') + 1);
+    if(remesh)
+    {
+      Model remeshed;
+      const BM::Surface_remeshing_report rr = BM::remesh_surfaces(m, remeshed);
+      std::cout << name << ": surfaces re-meshed, " << m.number_of_triangles() << " -> " << remeshed.number_of_triangles()
+                << " triangles, min angle " << rr.min_angle << " (" << rr.time << " s)" << std::endl;
+      m = std::move(remeshed);
+      name += " (re-meshed)";
+    }
     const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
     const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
     std::vector<Bubble> interior = BM::place_initial_bubbles(m, surface, sizing);
@@ -329,7 +341,7 @@ int main(int argc, char** argv)
   double skin = 0.15; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
-  bool print_rounds = false;
+  bool print_rounds = false, remesh = false;
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -339,6 +351,7 @@ int main(int argc, char** argv)
     else if(a == "--warmup" && has_value) warmup = std::size_t(std::atol(argv[++i]));
     else if(a == "--skin" && has_value) skin = std::atof(argv[++i]);
     else if(a == "--rounds" && alpha) print_rounds = true;
+    else if(a == "--remesh-surfaces" && alpha) remesh = true;
     else if(a == "--threads" && has_value)
     {
       threads.clear();
@@ -363,5 +376,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skin);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), print_rounds);
+  return alpha_table(models, threads.front(), print_rounds, remesh);
 }

@@ -731,6 +731,7 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
   if(first.added + first.removed > 0) s.sort_free_spatially(sort_cell);
   relax(0, first, tolerance);
   std::vector<std::size_t> history;
+  bool cycled = false;
   for(std::size_t round = 1; round <= st.population_rounds && !rep.interrupted; ++round)
   {
     const Population_change change = population_pass<ConcurrencyTag>(s, sizing, st);
@@ -743,9 +744,12 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
     // add/delete cycles: the changes stopped shrinking for two rounds in a row
     history.push_back(changes);
     const std::size_t h = history.size();
-    const bool cycling = h >= 3 && history[h - 1] >= history[h - 2] && history[h - 2] >= history[h - 3];
+    const bool cycling = !settled && h >= 3 && history[h - 1] >= history[h - 2] && history[h - 2] >= history[h - 3];
     const bool strict = tolerance <= st.tolerance;
-    if((settled || cycling) && strict)
+    // A population that cycled gets one pass after a relaxation to the full
+    // tolerance, not a new series: more rounds would only trade bubbles, and
+    // each strict relaxation of a big region costs its whole step budget.
+    if((settled || cycling || cycled) && strict)
     {
       rep.population_settled = settled;
       rep.stopped_cycling = !settled;
@@ -756,6 +760,7 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
     {
       tolerance = st.tolerance;
       history.clear();
+      cycled = cycling;
     }
     if(changes > 0) s.sort_free_spatially(sort_cell);
     if(changes > 0 || settled || cycling) relax(round, change, tolerance);
@@ -859,7 +864,8 @@ overlap ratio above `max_overlap_ratio` and inserts new ones in the largest
 gap next to those below `min_overlap_ratio`. Rounds go on until a pass
 changes at most `population_tolerance` of the population (or one bubble),
 `number_of_population_rounds` have run, or the changes have stopped shrinking
-for two rounds in a row (the guard against endless add/delete cycles).
+for two rounds in a row (the guard against endless add/delete cycles); then
+one relaxation to `displacement_tolerance` ends the region's run.
 
 <b>Parallelism and determinism.</b> Regions relax independently (their
 surface bubbles are fixed) and, with `CGAL::Parallel_tag` and TBB, at the
