@@ -16,6 +16,7 @@
 #include <CGAL/Bubble_mesh_3/place_initial_bubbles.h>
 #include <CGAL/Bubble_mesh_3/place_surface_bubbles.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
+#include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Real_timer.h>
@@ -52,7 +53,7 @@ namespace {
 
 const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin S]\n"
-  "       bench_relaxation alpha [MODEL ...] [--threads N] [--rounds] [--remesh-surfaces]\n"
+  "       bench_relaxation alpha [MODEL ...] [--threads N] [--rounds] [--remesh-surfaces] [--repulsive]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -74,7 +75,8 @@ const char* usage =
   "            share inside [10,14]. --rounds prints a line at the end of every\n"
   "            population round (region, changes, population, steps, last move).\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
-  "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n";
+  "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
+  "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n";
 
 double cpu_seconds()
 {
@@ -231,7 +233,8 @@ double quantile(const std::vector<double>& sorted, double q)
   return sorted[std::size_t(q * double(sorted.size() - 1) + 0.5)];
 }
 
-int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool print_rounds, bool remesh)
+int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool print_rounds, bool remesh,
+                bool repulsive)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -252,6 +255,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool
       m = std::move(remeshed);
       name += " (re-meshed)";
     }
+    if(repulsive) name += " (repulsive law)";
     const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
     const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
     std::vector<Bubble> interior = BM::place_initial_bubbles(m, surface, sizing);
@@ -260,8 +264,10 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool
     clock.print_rounds = print_rounds;
     const std::string load = load_average();
     const double c0 = cpu_seconds();
-    const BM::Relaxation_report rep = BM::relax_bubbles(m, surface, interior, sizing,
-                                                        params::number_of_threads(threads, params::visitor(std::ref(clock))));
+    const auto np = params::number_of_threads(threads, params::visitor(std::ref(clock)));
+    const BM::Relaxation_report rep =
+      repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), np))
+                : BM::relax_bubbles(m, surface, interior, sizing, np);
     const double cpu = cpu_seconds() - c0;
     const Region_sides<K> sides(m);
     std::size_t outside = 0;
@@ -341,7 +347,7 @@ int main(int argc, char** argv)
   double skin = 0.15; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
-  bool print_rounds = false, remesh = false;
+  bool print_rounds = false, remesh = false, repulsive = false;
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -352,6 +358,7 @@ int main(int argc, char** argv)
     else if(a == "--skin" && has_value) skin = std::atof(argv[++i]);
     else if(a == "--rounds" && alpha) print_rounds = true;
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
+    else if(a == "--repulsive" && alpha) repulsive = true;
     else if(a == "--threads" && has_value)
     {
       threads.clear();
@@ -376,5 +383,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skin);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), print_rounds, remesh);
+  return alpha_table(models, threads.front(), print_rounds, remesh, repulsive);
 }

@@ -12,6 +12,7 @@
 #include <CGAL/Bubble_mesh_3/IO/write_mesh.h>
 #include <CGAL/Bubble_mesh_3/IO/write_quality_report.h>
 #include <CGAL/Bubble_mesh_3/IO/write_svg_histograms.h>
+#include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h>
 #include <CGAL/make_bubble_mesh_3.h>
 #include <CGAL/Real_timer.h>
@@ -65,6 +66,11 @@ const char* usage_text =
 "  --sliver-bound D           move bubbles of tetrahedra whose smallest dihedral angle\n"
 "                             is under D degrees (default 15); surfaces never move\n"
 "  --no-sliver-removal        keep the tetrahedralization as it is\n"
+"  --force-law L              the bubbles' pair force: cubic (default, the paper's: repels\n"
+"                             closer than touching, attracts a little up to 1.5 times) or\n"
+"                             repulsive (the same without the attraction: bubbles do not\n"
+"                             stack where they are sparse; better tetrahedra on models\n"
+"                             with graded sizes, longer relaxation)\n"
 "  --keep-steiner-points      sliver removal leaves the Steiner points of the surface\n"
 "                             recovery; by default it collapses them onto neighbours on\n"
 "                             the same input triangles where the tetrahedra get better\n"
@@ -107,6 +113,7 @@ struct Options
   bool collapse_steiner_points = true;
   double sliver_bound = 15.;
   bool remesh_surfaces = false;
+  bool repulsive_force = false;
   bool keep_input_triangles = false;
   double planar_angle_bound = 10.;
   double size = 0.;          // absolute target edge length (0: not given)
@@ -153,6 +160,12 @@ Options parse_options(int argc, char** argv)
     else if(a == "--keep-steiner-points") o.collapse_steiner_points = false;
     else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
     else if(a == "--remesh-surfaces") o.remesh_surfaces = true;
+    else if(a == "--force-law")
+    {
+      const std::string v = value(a);
+      if(v == "repulsive") o.repulsive_force = true;
+      else if(v != "cubic") usage_error("--force-law takes cubic or repulsive, not '" + v + "'");
+    }
     else if(a == "--keep-input-triangles") o.keep_input_triangles = true;
     else if(a == "--planar-angle-bound") o.planar_angle_bound = parse_double(a, value(a));
     else if(a == "--size")
@@ -278,10 +291,14 @@ int main(int argc, char** argv)
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
                     CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))));
     // the size is a named parameter only when given: its absence selects the default
-    if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, np));
-    else if(opt.relative_size > 0.)
-      BM::make_bubble_mesh_3(model, c3t3, BM::parameters::relative_edge_length(opt.relative_size, np));
-    else BM::make_bubble_mesh_3(model, c3t3, np);
+    auto mesh = [&](const auto& with_law) {
+      if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));
+      else if(opt.relative_size > 0.)
+        BM::make_bubble_mesh_3(model, c3t3, BM::parameters::relative_edge_length(opt.relative_size, with_law));
+      else BM::make_bubble_mesh_3(model, c3t3, with_law);
+    };
+    if(opt.repulsive_force) mesh(BM::parameters::force_law(BM::Repulsive_bubble_force(), np));
+    else mesh(np);
     stage_timer.stop();
   }
   catch(const std::exception& e)

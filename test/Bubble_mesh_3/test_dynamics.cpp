@@ -6,6 +6,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bubble_mesh_3/Cubic_bubble_force.h>
+#include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
 #include <CGAL/Bubble_mesh_3/control_bubble_population.h>
 #include <CGAL/Bubble_mesh_3/Surface_bubble_sizing_field.h>
@@ -136,6 +137,38 @@ static void test_two_bubbles()
               << rep.steps << " steps" << std::endl;
     assert(rep.converged());
     assert(std::abs(l - 0.5) < 1e-4);
+  }
+}
+
+// -- 2b. the repulsive law: the cubic below w = 1, nothing beyond; two
+// overlapping bubbles part until they touch, two within the cubic's
+// attraction range stay where they are (the cubic would pull them together)
+static void test_repulsive_law()
+{
+  const BM::Repulsive_bubble_force f(2.);
+  const BM::Cubic_bubble_force c(2.);
+  for(double w : {0., 0.3, 0.5, 0.9, 0.999}) assert(f(w) == c(w) && f(w) > 0.);
+  for(double w : {1., 1.1, 1.27, 1.49, 2.}) assert(f(w) == 0.);
+  assert(c(1.27) < 0.);
+  assert(f.cutoff() == 1. && f.stiffness() == 2.);
+
+  const Model cube = make_cube(4., 4);
+  const std::vector<Bubble> surface = fixed_bubbles(cube, 0.5);
+  const Split_sizing sizing{2., 0.2, 0.3};
+  for(double start : {0.3, 0.7})
+  {
+    std::vector<Bubble> interior;
+    interior.push_back(Bubble(Point_3(2. - 0.5 * start, 2., 2.), 0.2, 1, BM::no_index, false));
+    interior.push_back(Bubble(Point_3(2. + 0.5 * start, 2., 2.), 0.3, 1, BM::no_index, false));
+    const BM::Relaxation_report rep = BM::relax_bubbles(
+      cube, surface, interior, sizing,
+      params::force_law(BM::Repulsive_bubble_force(), params::number_of_population_rounds(0, params::displacement_tolerance(1e-9))));
+    const double l = dist(interior[0], interior[1]);
+    std::cout << "two bubbles, repulsive law: start " << start << ", end at " << l << " after " << rep.steps
+              << " steps" << std::endl;
+    assert(rep.converged());
+    if(start < 0.5) assert(l >= 0.5 - 1e-4 && l < 0.55); // parted until about touching
+    else assert(std::abs(l - start) < 1e-12);             // not pulled together
   }
 }
 
@@ -404,6 +437,7 @@ static void test_layered_model()
 int main()
 {
   test_force_law();
+  test_repulsive_law();
   test_two_bubbles();
   test_lattice_at_rest();
   test_strays();

@@ -21,6 +21,7 @@ A model must be cheap to copy and safe to call from several threads at once
 loop of the relaxation, once per neighbour and per force evaluation.
 
 \cgalHasModel `CGAL::Bubble_mesh_3::Cubic_bubble_force`
+\cgalHasModel `CGAL::Bubble_mesh_3::Repulsive_bubble_force`
 */
 class BubbleForceLaw
 {
