@@ -119,6 +119,10 @@ run "$model" --remesh-surfaces --size abc%
 check "--size abc% exits 2" test "$rc" -eq 2
 check "--size abc% named" contains "$err" "--size"
 
+run "$model" --force-law soft
+check "--force-law soft exits 2" test "$rc" -eq 2
+check "--force-law soft named" contains "$err" "--force-law takes cubic or repulsive, not 'soft'"
+
 run "$model" --no-such-option
 check "unknown option exits 2" test "$rc" -eq 2
 check "unknown option named" contains "$err" "--no-such-option"
@@ -213,6 +217,19 @@ for r in s['regions']:
   run "$model" -o "$tmp/one.mesh" --threads 1 -q
   check "one thread exits 0" test "$rc" -eq 0
   check "same mesh with 1 and 2 threads" cmp -s "$tmp/one.mesh" "$tmp/m.mesh"
+
+  # the repulsive force law: bubbles placed otherwise, the same region volumes
+  run "$model" -q -o "$tmp/rep.mesh" --force-law repulsive --quality-json "$tmp/q_rep.json"
+  check "--force-law repulsive exits 0" test "$rc" -eq 0
+  if command -v python3 >/dev/null; then
+    check "--force-law repulsive: another mesh, same volume" python3 -c "
+import json
+a=json.load(open('$tmp/q.json')); b=json.load(open('$tmp/q_rep.json'))
+assert open('$tmp/rep.mesh').read() != open('$tmp/m.mesh').read()
+assert b['all']['tetrahedra'] > 0
+assert abs(a['all']['volume'] - b['all']['volume']) <= 1e-9 * a['all']['volume']
+"
+  fi
 
   # sliver removal moves bubbles only where it helps: switched off, the mesh is no better
   run "$model" -q --no-sliver-removal --quality-json "$tmp/q_raw.json"

@@ -864,8 +864,9 @@ overlap ratio above `max_overlap_ratio` and inserts new ones in the largest
 gap next to those below `min_overlap_ratio`. Rounds go on until a pass
 changes at most `population_tolerance` of the population (or one bubble),
 `number_of_population_rounds` have run, or the changes have stopped shrinking
-for two rounds in a row (the guard against endless add/delete cycles); then
-one relaxation to `displacement_tolerance` ends the region's run.
+for two rounds in a row (the guard against endless add/delete cycles); in
+that last case a relaxation to `displacement_tolerance`, one more pass and,
+if the pass changed anything, a last relaxation end the region's run.
 
 <b>Parallelism and determinism.</b> Regions relax independently (their
 surface bubbles are fixed) and, with `CGAL::Parallel_tag` and TBB, at the
