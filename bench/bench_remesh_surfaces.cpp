@@ -76,7 +76,7 @@ double diagonal(const Model& m)
                    CGAL::square(box.zmax() - box.zmin()));
 }
 
-void details(const Model& output, const BM::Surface_remeshing_report& r)
+void details(const Model& output, const BM::Surface_remeshing_report& r, const BM::Remeshing_sizing_field<K>& field)
 {
   // the triangles under the bound, worst first (forced ones are counted by the report, not listed apart)
   std::vector<std::pair<double, std::size_t> > small;
@@ -87,13 +87,17 @@ void details(const Model& output, const BM::Surface_remeshing_report& r)
     if(a < r.angle_bound) small.push_back(std::make_pair(a, t));
   }
   std::sort(small.begin(), small.end());
-  std::cout << "    triangles under " << r.angle_bound << " deg, worst first (angle, patch, centroid):\n";
+  std::cout << "    triangles under " << r.angle_bound << " deg, worst first (angle, patch, centroid, edge lengths, "
+            << "target at the centroid; the field's floor is " << field.minimum_size() << "):\n";
   for(std::size_t i = 0; i < small.size() && i < 40; ++i)
   {
     const auto& tri = output.triangle(small[i].second);
     const Point g = CGAL::centroid(output.point(tri[0]), output.point(tri[1]), output.point(tri[2]));
     std::cout << "      " << small[i].first << "  patch " << output.patch_of_triangle(small[i].second) << " ("
-              << output.patch(output.patch_of_triangle(small[i].second)).name << ")  " << g << "\n";
+              << output.patch(output.patch_of_triangle(small[i].second)).name << ")  " << g << "  ";
+    for(int k = 0; k < 3; ++k)
+      std::cout << std::sqrt(CGAL::squared_distance(output.point(tri[k]), output.point(tri[(k + 1) % 3]))) << " ";
+    std::cout << " target " << field(g, output.patch_of_triangle(small[i].second)) << "\n";
   }
 }
 
@@ -146,9 +150,10 @@ int main(int argc, char** argv)
       continue;
     }
     Model output;
+    BM::Remeshing_sizing_field<K> field(input, BM::detect_model_features(input));
     const BM::Surface_remeshing_report r =
-      size > 0. ? BM::remesh_surfaces(input, output, BM::parameters::edge_length(size))
-                : BM::remesh_surfaces(input, output);
+      size > 0. ? BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field, BM::parameters::edge_length(size)))
+                : BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field));
     const std::vector<std::string> problems = BM::geological_model_problems(output);
     const std::vector<double> bound = volume_change_bounds(input, output);
     // the worst region against its bound
@@ -170,7 +175,7 @@ int main(int argc, char** argv)
       std::cout << "    diagonal " << diagonal(input) << ", " << r.number_of_charts << " charts ("
                 << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points << "\n";
       for(const std::string& p : problems) std::cout << "    problem: " << p << "\n";
-      details(output, r);
+      details(output, r, field);
     }
     if(!problems.empty()) status = EXIT_FAILURE;
   }

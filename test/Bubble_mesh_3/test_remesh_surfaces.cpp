@@ -321,6 +321,41 @@ void test_sizing()
   assert(std::abs(finer(Point(5, 4, 4), 3) - 0.25) < 1e-9);
 }
 
+// A fault tip 0.5 under a small body (a 0.4 x 0.4 x 0.4 lens) that lies
+// wholly within the curve rule's search radius (twice the size): the rule
+// must see the lens (CGAL's Sphere_3 intersection tests, with the sphere's
+// surface, missed it); no thickness ray from either surface meets the other
+void test_proximity_inside_search_ball()
+{
+  std::cout << "curve proximity to a body inside the search radius\n";
+  Builder b;
+  const std::size_t rock = b.model.add_region("rock"), lens = b.model.add_region("lens");
+  const std::size_t outer = b.model.add_patch("outer", 0, rock), lens_faces = b.model.add_patch("lens", rock, lens);
+  const std::size_t fault = b.model.add_patch("fault", rock, rock);
+  auto box = [&](std::size_t patch, const Point& lo, const Point& hi) {
+    const double x[2] = {lo.x(), hi.x()}, y[2] = {lo.y(), hi.y()}, z[2] = {lo.z(), hi.z()};
+    for(int k = 0; k < 2; ++k)
+    {
+      const double sign = k == 0 ? -1. : 1.;
+      b.rectangle(patch, Point(x[k], y[0], z[0]), Point(x[k], y[1], z[0]), Point(x[k], y[1], z[1]),
+                  Point(x[k], y[0], z[1]), Vector(sign, 0, 0));
+      b.rectangle(patch, Point(x[0], y[k], z[0]), Point(x[1], y[k], z[0]), Point(x[1], y[k], z[1]),
+                  Point(x[0], y[k], z[1]), Vector(0, sign, 0));
+      b.rectangle(patch, Point(x[0], y[0], z[k]), Point(x[1], y[0], z[k]), Point(x[1], y[1], z[k]),
+                  Point(x[0], y[1], z[k]), Vector(0, 0, sign));
+    }
+  };
+  box(outer, Point(0, 0, 0), Point(10, 8, 4));
+  box(lens_faces, Point(4.8, 3.8, 2.5), Point(5.2, 4.2, 2.9));
+  b.rectangle(fault, Point(5, 2, 1), Point(5, 6, 1), Point(5, 6, 2), Point(5, 2, 2), Vector(1, 0, 0));
+  const Model& m = b.model;
+  const BM::Model_features f = BM::detect_model_features(m);
+  const BM::Remeshing_sizing_field<K> field(m, f, BM::parameters::edge_length(1.));
+  const double at_tip = field(Point(5, 4, 2), fault);
+  std::cout << "  size on the fault tip under the lens " << at_tip << " (0.5 away: 0.25 wanted)\n";
+  assert(std::abs(at_tip - 0.25) < 1e-9);
+}
+
 // `field` is the one remesh_surfaces() used (`given` plus the spacing of the curve points it had to keep)
 void check_remeshed(const Model& input, const Model& output, const BM::Surface_remeshing_report& r,
                     const BM::Remeshing_sizing_field<K>& field, const BM::Remeshing_sizing_field<K>& given,
@@ -509,6 +544,7 @@ int main(int argc, char** argv)
 {
   test_features();
   test_sizing();
+  test_proximity_inside_search_ball();
   test_in_memory(BM::Surface_remeshing_method::BUBBLES);
   test_in_memory(BM::Surface_remeshing_method::ISOTROPIC);
   test_overhang();

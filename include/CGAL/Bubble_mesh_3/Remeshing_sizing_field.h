@@ -287,7 +287,6 @@ private:
   typedef typename SK::Vector_3 SVector;
   typedef typename SK::Segment_3 SSegment;
   typedef typename SK::Triangle_3 STriangle;
-  typedef typename SK::Sphere_3 SSphere;
   static SPoint sp(const Point_3& p)
   {
     return SPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
@@ -544,7 +543,9 @@ private:
         for(std::size_t k = 0; k <= n; ++k)
         {
           const SPoint x = a + (e - a) * (double(k) / double(n));
-          const SSphere ball(x, reach * reach);
+          // a box, not a Sphere_3: CGAL's Sphere_3 intersection tests are with
+          // the sphere's surface and miss what lies wholly inside it
+          const Bbox_3 ball(x.x() - reach, x.y() - reach, x.z() - reach, x.x() + reach, x.y() + reach, x.z() + reach);
           double best2 = reach * reach;
           near_triangles.clear();
           ttree.all_intersected_primitives(ball, std::back_inserter(near_triangles));
