@@ -71,6 +71,10 @@ const char* usage_text =
 "                             repulsive (the same without the attraction: bubbles do not\n"
 "                             stack where they are sparse; better tetrahedra on models\n"
 "                             with graded sizes, longer relaxation)\n"
+"  --smooth N                 sliver removal also smooths all interior vertices, at most\n"
+"                             N passes (default 0: off): each moves towards the\n"
+"                             optimal-Delaunay point of its star where the tetrahedra\n"
+"                             around it get a lower mean aspect ratio and none worse\n"
 "  --keep-steiner-points      sliver removal leaves the Steiner points of the surface\n"
 "                             recovery; by default it collapses them onto neighbours on\n"
 "                             the same input triangles where the tetrahedra get better\n"
@@ -111,6 +115,7 @@ struct Options
   double merge_tolerance = 0.;
   bool sliver_removal = true;
   bool collapse_steiner_points = true;
+  std::size_t smoothing_passes = 0;
   double sliver_bound = 15.;
   bool remesh_surfaces = false;
   bool repulsive_force = false;
@@ -158,6 +163,12 @@ Options parse_options(int argc, char** argv)
     else if(a == "--merge-tolerance") o.merge_tolerance = parse_double(a, value(a));
     else if(a == "--no-sliver-removal") o.sliver_removal = false;
     else if(a == "--keep-steiner-points") o.collapse_steiner_points = false;
+    else if(a == "--smooth")
+    {
+      const double n = parse_double(a, value(a));
+      if(!(n >= 0.) || n != std::floor(n) || n > 1000.) usage_error("--smooth takes a number of passes from 0 to 1000");
+      o.smoothing_passes = std::size_t(n);
+    }
     else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
     else if(a == "--remesh-surfaces") o.remesh_surfaces = true;
     else if(a == "--force-law")
@@ -285,11 +296,12 @@ int main(int argc, char** argv)
                     BM::parameters::bubble_mesh_report(&report,
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,
                     BM::parameters::collapse_steiner_points(opt.sliver_removal && opt.collapse_steiner_points,
+                    BM::parameters::number_of_smoothing_passes(opt.sliver_removal ? opt.smoothing_passes : 0,
                     BM::parameters::sliver_bound(opt.sliver_bound,
                     BM::parameters::keep_input_triangles(opt.keep_input_triangles,
                     BM::parameters::planar_angle_bound(opt.planar_angle_bound,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));
@@ -363,7 +375,12 @@ int main(int argc, char** argv)
       std::cout << "sliver removal: tetrahedra with a dihedral angle under " << sr.sliver_bound << " degrees "
                 << sr.number_of_slivers_before << " -> " << sr.number_of_slivers_after << ", smallest dihedral "
                 << sr.min_dihedral_angle_before << " -> " << sr.min_dihedral_angle_after << " degrees ("
-                << sr.number_of_vertices_moved << " bubbles moved, " << sr.number_of_steiner_points_collapsed
+                << sr.number_of_vertices_moved << " bubbles moved, "
+                << (sr.number_of_smoothing_passes ? std::to_string(sr.number_of_smoothing_moves) + " smoothing moves in " +
+                                                      std::to_string(sr.number_of_smoothing_passes) + " passes (" +
+                                                      std::to_string(sr.time_smoothing) + " s), "
+                                                  : std::string())
+                << sr.number_of_steiner_points_collapsed
                 << " Steiner points collapsed, " << sr.number_of_2_3_flips + sr.number_of_edge_removals << " flips, "
                 << sr.number_of_vertices_inserted << " vertices inserted; " << sr.time_perturbation << " s, "
                 << sr.time_collapses << " s, " << sr.time_flips << " s, " << sr.time_insertion << " s)\n";

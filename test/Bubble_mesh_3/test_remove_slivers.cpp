@@ -80,6 +80,7 @@ struct Surface_state
   std::set<Coordinates> surface_points; // vertices of complex facets
   std::size_t number_of_cells = 0;
   double min_dihedral = 180.;
+  std::vector<double> aspect_ratios; // of the cells, sorted
   std::size_t under_10 = 0, under_bound = 0;
 };
 
@@ -114,9 +115,11 @@ Surface_state surface_state(const Mesh& c3t3, double bound)
                              point(c->vertex(2)->point()), point(c->vertex(3)->point())) == CGAL::POSITIVE);
     s.region_volumes[c3t3.subdomain_index(c)] += q.volume;
     s.min_dihedral = (std::min)(s.min_dihedral, q.min_dihedral_angle);
+    s.aspect_ratios.push_back(q.aspect_ratio);
     if(q.min_dihedral_angle < 10.) ++s.under_10;
     if(q.min_dihedral_angle < bound) ++s.under_bound;
   }
+  std::sort(s.aspect_ratios.begin(), s.aspect_ratios.end());
   return s;
 }
 
@@ -395,6 +398,29 @@ void test_lattice()
     check_labels(t);
     assert(r.time_limit_reached && r.time < 2.);
     check_kept(surface_state(original, 25.), surface_state(t, 25.), "0.05 s budget, bound 25");
+  }
+
+  // the smoothing alone: every move lowers the mean aspect ratio of what it
+  // changes and keeps the rest, so the mesh's ratios come down
+  {
+    C3T3 m(original);
+    const BM::Sliver_removal_report r = BM::remove_slivers(
+      m, BM::parameters::number_of_smoothing_passes(
+           3, BM::parameters::perturb_interior_vertices(false, BM::parameters::sliver_bound(bound))));
+    std::cout << r << std::endl;
+    check_labels(m);
+    assert(m.triangulation().is_valid()); // still regular
+    const Surface_state s = surface_state(m, bound);
+    check_kept(s0, s, "smoothing only");
+    assert(r.number_of_smoothing_passes >= 1 && r.number_of_smoothing_moves > 0);
+    assert(s.under_bound <= s0.under_bound);
+    const double median0 = s0.aspect_ratios[s0.aspect_ratios.size() / 2];
+    const double median = s.aspect_ratios[s.aspect_ratios.size() / 2];
+    const double p90_0 = s0.aspect_ratios[9 * s0.aspect_ratios.size() / 10];
+    const double p90 = s.aspect_ratios[9 * s.aspect_ratios.size() / 10];
+    std::cout << "  aspect ratio median " << median0 << " -> " << median << ", 90th percentile " << p90_0 << " -> "
+              << p90 << std::endl;
+    assert(median < median0 && p90 < p90_0);
   }
 
   // the optional polish (interior remeshing): kept only if it keeps everything

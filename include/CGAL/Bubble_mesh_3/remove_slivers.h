@@ -77,6 +77,11 @@ struct Sliver_removal_report
   std::size_t number_of_vertices_moved = 0; ///< distinct vertices among them
   std::size_t number_of_candidates_rejected = 0; ///< positions refused: outside the region or cutting a complex facet
 
+  /// smoothing passes over all interior vertices (step 1, after the perturbation)
+  std::size_t number_of_smoothing_passes = 0;
+  std::size_t number_of_smoothing_moves = 0; ///< accepted smoothing moves
+  double time_smoothing = 0.;                ///< seconds spent smoothing
+
   bool exudation_done = false;     ///< step 2 ran and its result was kept
   bool exudation_reverted = false; ///< step 2 ran but broke a check (facets, volumes, angles) and was undone
   std::string exudation_reverted_because; ///< which check, when undone
@@ -133,6 +138,8 @@ inline std::ostream& operator<<(std::ostream& os, const Sliver_removal_report& r
      << (r.skipped_not_regular ? "triangulation not regular, " : "") << r.number_of_perturbation_passes
      << " passes, " << r.number_of_vertices_tried << " vertices tried, " << r.number_of_moves << " moves of "
      << r.number_of_vertices_moved << " vertices, " << r.number_of_candidates_rejected << " positions refused\n"
+     << "  smoothing: " << r.number_of_smoothing_passes << " passes, " << r.number_of_smoothing_moves << " moves ("
+     << r.time_smoothing << " s)\n"
      << "  exudation: "
      << (r.exudation_done ? "kept" : (r.exudation_reverted ? "undone, " + r.exudation_reverted_because : "not run"))
      << " (code " << int(r.exudation_code) << ")"
@@ -446,6 +453,14 @@ without it (the default), the same input and seed give the same mesh.
     \cgalParamType{bool}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{number_of_smoothing_passes}
+    \cgalParamDescription{passes of a smoothing of all interior vertices after step 1: each vertex moves towards
+      the optimal-Delaunay point of its star or the centroid of its neighbours (or half way) where that lowers the
+      mean aspect ratio of the cells it changes, with no smaller dihedral angle and no more cells under the bound;
+      moves are re-insertions checked like the perturbation's (step 1b; needs a regular triangulation)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
   \cgalParamNBegin{surface_vertex_supports}
     \cgalParamDescription{the Steiner points of the recovery and the input triangles under every surface
       vertex, as `tetrahedralize_bubbles()` fills them for this mesh; without it no Steiner point is
@@ -519,6 +534,8 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   const bool perturb = choose_parameter(get_parameter(np, internal_np::perturb_interior_vertices), true);
   const bool exude = choose_parameter(get_parameter(np, internal_np::exude_slivers), false);
   const bool polish = choose_parameter(get_parameter(np, internal_np::polish_interior), false);
+  const std::size_t smoothing_passes =
+    choose_parameter(get_parameter(np, internal_np::number_of_smoothing_passes), std::size_t(0));
   const bool insert = choose_parameter(get_parameter(np, internal_np::insert_interior_vertices), perturb);
   const bool flip = choose_parameter(get_parameter(np, internal_np::flip_slivers), perturb);
   Surface_vertex_supports<Tr>* const supports =
@@ -577,7 +594,8 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
 
   // steps 1 and 2 need the empty-sphere property, which steps 3 and 4 of an
   // earlier call may have taken away
-  const bool regular = !(perturb || exude) || r.number_of_slivers_before == 0 ||
+  const bool regular = !(perturb || exude || smoothing_passes > 0) ||
+                       (r.number_of_slivers_before == 0 && smoothing_passes == 0) ||
                        internal::is_regular_triangulation(c3t3.triangulation());
   r.skipped_not_regular = !regular;
 
@@ -598,6 +616,20 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
     r.time_limit_reached = s.time_limit_reached;
     record(r.min_dihedral_angle_after_perturbation, r.number_of_slivers_after_perturbation);
     r.time_perturbation = timer.time();
+  }
+  // 1b. smoothing of all interior vertices: each move keeps the smallest
+  // angle and the count under the bound of what it changes
+  if(smoothing_passes > 0 && regular)
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    internal::Interior_vertex_perturber<C3T3> smoother(c3t3, bound, radius_factor, directions, seed);
+    const internal::Perturbation_statistics s = smoother.smooth(smoothing_passes, limit - total.time());
+    r.number_of_smoothing_passes = s.number_of_passes;
+    r.number_of_smoothing_moves = s.number_of_moves;
+    if(s.time_limit_reached) r.time_limit_reached = true;
+    record(r.min_dihedral_angle_after_perturbation, r.number_of_slivers_after_perturbation);
+    r.time_smoothing = timer.time();
   }
   r.min_dihedral_angle_after = r.min_dihedral_angle_after_perturbation;
   r.number_of_slivers_after = r.number_of_slivers_after_perturbation;

@@ -26,6 +26,7 @@ enum sliver_bound_t { sliver_bound };
 enum perturb_interior_vertices_t { perturb_interior_vertices };
 enum exude_slivers_t { exude_slivers };
 enum polish_interior_t { polish_interior };
+enum number_of_smoothing_passes_t { number_of_smoothing_passes };
 enum insert_interior_vertices_t { insert_interior_vertices };
 enum flip_slivers_t { flip_slivers };
 enum collapse_steiner_points_t { collapse_steiner_points };
@@ -53,6 +54,9 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, exude_slivers)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: whether CGAL's `tetrahedral_isotropic_remeshing()` polishes the interior at the end (default `false`)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, polish_interior)
+/// \ingroup PkgBubbleMesh3Ref
+/// `remove_slivers()`: passes of the smoothing of all interior vertices after the perturbation (default 0: none)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_smoothing_passes)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: whether slivers left are replaced by the star of a new interior vertex at the end
 /// (default: the value of `perturb_interior_vertices`)
