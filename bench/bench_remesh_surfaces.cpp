@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -150,10 +151,15 @@ int main(int argc, char** argv)
       continue;
     }
     Model output;
-    BM::Remeshing_sizing_field<K> field(input, BM::detect_model_features(input));
+    // the field remesh_surfaces() used, for --details: a placeholder it
+    // overwrites, built without the thickness rules that make a field costly
+    std::unique_ptr<BM::Remeshing_sizing_field<K> > field;
+    if(show_details)
+      field.reset(new BM::Remeshing_sizing_field<K>(input, BM::detect_model_features(input),
+                                                    BM::parameters::elements_across_thickness(0.)));
     const BM::Surface_remeshing_report r =
-      size > 0. ? BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field, BM::parameters::edge_length(size)))
-                : BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field));
+      size > 0. ? BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(field.get(), BM::parameters::edge_length(size)))
+                : BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(field.get()));
     const std::vector<std::string> problems = BM::geological_model_problems(output);
     const std::vector<double> bound = volume_change_bounds(input, output);
     // the worst region against its bound
@@ -175,7 +181,7 @@ int main(int argc, char** argv)
       std::cout << "    diagonal " << diagonal(input) << ", " << r.number_of_charts << " charts ("
                 << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points << "\n";
       for(const std::string& p : problems) std::cout << "    problem: " << p << "\n";
-      details(output, r, field);
+      details(output, r, *field);
     }
     if(!problems.empty()) status = EXIT_FAILURE;
   }

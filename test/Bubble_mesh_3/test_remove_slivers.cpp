@@ -741,6 +741,15 @@ void test_cell_angle()
   } while(std::next_permutation(order, order + 4));
   std::cout << "smallest dihedral angle of a nearly flat cell, largest over its 24 vertex orders: " << largest << std::endl;
   assert(largest < 1e-3);
+
+  // the smoothing's aspect ratio is the quality report's
+  using BM::internal::aspect_ratio;
+  assert(std::abs(aspect_ratio(regular[0], regular[1], regular[2], regular[3]) - std::sqrt(1.5)) < 1e-12);
+  const BM::internal::Vec3 skewed[4] = {{{0., 0., 0.}}, {{3., 0.2, 0.}}, {{0.4, 1., 0.1}}, {{1., 0.3, 0.05}}};
+  const double mine = aspect_ratio(skewed[0], skewed[1], skewed[2], skewed[3]);
+  const double report = BM::tetrahedron_quality(skewed[0], skewed[1], skewed[2], skewed[3]).aspect_ratio;
+  std::cout << "aspect ratio of a skewed cell " << mine << ", quality report " << report << std::endl;
+  assert(std::abs(mine - report) <= 1e-12 * report);
 }
 
 int main(int argc, char** argv)

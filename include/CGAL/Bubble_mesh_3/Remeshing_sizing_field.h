@@ -543,12 +543,12 @@ private:
         for(std::size_t k = 0; k <= n; ++k)
         {
           const SPoint x = a + (e - a) * (double(k) / double(n));
-          // a box, not a Sphere_3: CGAL's Sphere_3 intersection tests are with
-          // the sphere's surface and miss what lies wholly inside it
-          const Bbox_3 ball(x.x() - reach, x.y() - reach, x.z() - reach, x.x() + reach, x.y() + reach, x.z() + reach);
+          // the search ball's box, not a Sphere_3: CGAL's Sphere_3 intersection
+          // tests are with the sphere's surface and miss what lies wholly inside it
+          const Bbox_3 box(x.x() - reach, x.y() - reach, x.z() - reach, x.x() + reach, x.y() + reach, x.z() + reach);
           double best2 = reach * reach;
           near_triangles.clear();
-          ttree.all_intersected_primitives(ball, std::back_inserter(near_triangles));
+          ttree.all_intersected_primitives(box, std::back_inserter(near_triangles));
           for(Triangle_iterator it : near_triangles)
           {
             const std::size_t q = model.patch_of_triangle(std::size_t(it - triangles.begin()));
@@ -556,7 +556,7 @@ private:
             best2 = (std::min)(best2, CGAL::to_double(CGAL::squared_distance(x, *it)));
           }
           near_segments.clear();
-          stree.all_intersected_primitives(ball, std::back_inserter(near_segments));
+          stree.all_intersected_primitives(box, std::back_inserter(near_segments));
           for(Segment_iterator it : near_segments)
           {
             const std::size_t d = segment_curve[std::size_t(it - segments.begin())];

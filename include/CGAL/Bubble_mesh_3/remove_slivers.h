@@ -593,10 +593,9 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   };
 
   // steps 1 and 2 need the empty-sphere property, which steps 3 and 4 of an
-  // earlier call may have taken away
-  const bool regular = !(perturb || exude || smoothing_passes > 0) ||
-                       (r.number_of_slivers_before == 0 && smoothing_passes == 0) ||
-                       internal::is_regular_triangulation(c3t3.triangulation());
+  // earlier call may have taken away (the smoothing runs even with no sliver)
+  const bool needs_regular = smoothing_passes > 0 || ((perturb || exude) && r.number_of_slivers_before > 0);
+  const bool regular = !needs_regular || internal::is_regular_triangulation(c3t3.triangulation());
   r.skipped_not_regular = !regular;
 
   // 1. perturbation

@@ -88,7 +88,9 @@ inline double smallest_dihedral_angle(const Vec3& p0, const Vec3& p1, const Vec3
 }
 
 // Aspect ratio of a tetrahedron: longest edge over shortest altitude (a
-// regular tetrahedron gives sqrt(3/2)); a flat one gives infinity.
+// regular tetrahedron gives sqrt(3/2)); a flat one gives infinity. The
+// measure of `tetrahedron_quality()`, without its angles: the smoothing
+// takes it for every cell it tries.
 inline double aspect_ratio(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3)
 {
   const Vec3* p[4] = {&p0, &p1, &p2, &p3};
@@ -452,10 +454,6 @@ public:
   }
 
 private:
-  // with weights a re-insertion could hide a neighbour, which the cell bases
-  // of Mesh_3 cannot give back; the surface recovery's tie-breaking weights
-  // are non-negative and far below the squared edge lengths, so they hide
-  // nothing (evaluate() still refuses a hidden point)
   // 3D, and no weight that could hide a re-inserted point
   bool can_run(Perturbation_statistics& stats) const
   {
@@ -464,6 +462,10 @@ private:
     return !stats.skipped_nonzero_weights;
   }
 
+  // with weights a re-insertion could hide a neighbour, which the cell bases
+  // of Mesh_3 cannot give back; the surface recovery's tie-breaking weights
+  // are non-negative and far below the squared edge lengths, so they hide
+  // nothing (evaluate() still refuses a hidden point)
   bool has_hiding_weights() const
   {
     for(auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
@@ -750,16 +752,16 @@ private:
         continue;
       }
       // a move must beat what it replaces (so the global smallest angle never
-      // drops and the count under the bound never grows); among those, the
-      // best smallest angle wins, the first one on ties
+      // drops and the count under the bound never grows)
       if(smoothing)
       {
-        // the lowest mean aspect ratio wins, the first one on ties
+        // among those, the lowest mean aspect ratio wins, the first one on ties
         if(!cand.made.smooths(cand.destroyed, ratio_gain)) continue;
         if(improved && !(cand.made.mean_ratio() < best.made.mean_ratio())) continue;
       }
       else
       {
+        // among those, the best smallest angle wins, the first one on ties
         if(!cand.made.improves_on(cand.destroyed, angle_tolerance)) continue;
         if(improved && !(cand.made.min_angle > best.made.min_angle ||
                          (cand.made.min_angle == best.made.min_angle && cand.made.under_bound < best.made.under_bound)))
