@@ -372,7 +372,8 @@ int main(int argc, char** argv)
               << report.time_placement << " s, relaxation " << report.time_relaxation
               << " s, tetrahedralization " << report.time_tetrahedralization << " s, sliver removal "
               << report.time_sliver_removal << " s\n";
-    if(sr.perturbation_done)
+    // also when no cell was under the bound at first: smoothing and flips may still have run
+    if(opt.sliver_removal)
       std::cout << "sliver removal: tetrahedra with a dihedral angle under " << sr.sliver_bound << " degrees "
                 << sr.number_of_slivers_before << " -> " << sr.number_of_slivers_after << ", smallest dihedral "
                 << sr.min_dihedral_angle_before << " -> " << sr.min_dihedral_angle_after << " degrees ("
