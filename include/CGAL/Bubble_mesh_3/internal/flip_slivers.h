@@ -91,9 +91,7 @@ public:
       const std::size_t tried = for_each_sliver_worst_first(
         c3t3_, bound_, [](const Cell_vertices&) { return true; }, work, timer, time_limit, stats.time_limit_reached);
       stats.number_of_slivers_tried += tried;
-      // another pass only while this one paid: on models whose surfaces force
-      // most slivers, later passes try many cells for a few flips
-      if(stats.time_limit_reached || changed == 0 || changed * 20 < tried) break;
+      if(stats.time_limit_reached || !pass_paid(changed, tried, 20)) break;
     }
     return stats;
   }

@@ -142,10 +142,7 @@ public:
       const std::size_t tried =
         for_each_sliver_worst_first(c3t3_, bound_, take, work, timer, time_limit, stats.time_limit_reached);
       stats.number_of_slivers_tried += tried;
-      // another pass only while this one paid: on models whose surfaces force
-      // most slivers, later passes try thousands of cells for a few stars
-      const std::size_t inserted = stats.number_of_vertices_inserted - before;
-      if(stats.time_limit_reached || inserted == 0 || inserted * 20 < tried) break;
+      if(stats.time_limit_reached || !pass_paid(stats.number_of_vertices_inserted - before, tried, 20)) break;
     }
     return stats;
   }

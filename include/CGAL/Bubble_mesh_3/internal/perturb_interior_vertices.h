@@ -87,6 +87,12 @@ inline double smallest_dihedral_angle(const Vec3& p0, const Vec3& p1, const Vec3
   return smallest;
 }
 
+// six times the volume of a tetrahedron, unsigned
+inline double six_volume(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3)
+{
+  return std::abs(dot(cross(sub(p1, p0), sub(p2, p0)), sub(p3, p0)));
+}
+
 // Aspect ratio of a tetrahedron: longest edge over shortest altitude (a
 // regular tetrahedron gives sqrt(3/2)); a flat one gives infinity. The
 // measure of `tetrahedron_quality()`, without its angles: the smoothing
@@ -106,10 +112,18 @@ inline double aspect_ratio(const Vec3& p0, const Vec3& p1, const Vec3& p2, const
     const Vec3 n = cross(sub(*p[(k + 2) % 4], *p[(k + 1) % 4]), sub(*p[(k + 3) % 4], *p[(k + 1) % 4]));
     largest_face2 = (std::max)(largest_face2, dot(n, n)); // (2 area)^2
   }
-  const double six_volume = std::abs(dot(cross(sub(p1, p0), sub(p2, p0)), sub(p3, p0)));
-  if(!(six_volume > 0.)) return std::numeric_limits<double>::infinity();
+  const double six_v = six_volume(p0, p1, p2, p3);
+  if(!(six_v > 0.)) return std::numeric_limits<double>::infinity();
   // shortest altitude = 3 V / largest area = six_volume / (2 area)
-  return std::sqrt(longest2) * std::sqrt(largest_face2) / six_volume;
+  return std::sqrt(longest2) * std::sqrt(largest_face2) / six_v;
+}
+
+// Another pass of a cell or vertex sweep only while the last one paid: at
+// least one change per `per` cells or vertices tried. On models whose
+// surfaces force most slivers, later passes try many for a few changes.
+inline bool pass_paid(std::size_t changed, std::size_t tried, std::size_t per)
+{
+  return changed > 0 && changed * per >= tried;
 }
 
 // coordinates of a (bare) point and of a vertex of a Mesh_3 triangulation
@@ -368,7 +382,7 @@ public:
           moved.insert(nv);
         }
       }
-      if(100 * (stats.number_of_moves - moves_before) < stats.number_of_vertices_tried - tried_before) break;
+      if(!pass_paid(stats.number_of_moves - moves_before, stats.number_of_vertices_tried - tried_before, 100)) break;
     }
     stats.number_of_vertices_moved = moved.size();
     return stats;
@@ -682,9 +696,8 @@ private:
     for(Cell_handle c : star)
     {
       old_star.add(cell_angle(c), bound_, cell_ratio(c));
-      const Vec3 a = coordinates(c->vertex(0));
-      const double w = std::abs(dot(cross(sub(coordinates(c->vertex(1)), a), sub(coordinates(c->vertex(2)), a)),
-                                    sub(coordinates(c->vertex(3)), a)));
+      const double w = six_volume(coordinates(c->vertex(0)), coordinates(c->vertex(1)), coordinates(c->vertex(2)),
+                                  coordinates(c->vertex(3)));
       const Vec3 cc = cell_circumcenter(c);
       for(int k = 0; k < 3; ++k) odt[k] += w * cc[k];
       volume += w;
