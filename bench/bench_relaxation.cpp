@@ -76,7 +76,9 @@ const char* usage =
   "            population round (region, changes, population, steps, last move).\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
-  "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n";
+  "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n"
+  "            A MODEL written layered:E is the bundled model made at longest surface\n"
+  "            edge E (make_layered_model; 80 is the bundled size).\n";
 
 double cpu_seconds()
 {
@@ -244,8 +246,16 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool
   for(const std::string& path : paths)
   {
     Model m;
-    if(!read_model(path, m)) { status = EXIT_FAILURE; continue; }
     std::string name = path.substr(path.find_last_of('/') + 1);
+    if(path.compare(0, 8, "layered:") == 0)
+    {
+      // the bundled model's generator at another size: a scale study on clean surfaces
+      BM::Layered_model_parameters lp;
+      lp.edge_length = std::atof(path.c_str() + 8);
+      BM::make_layered_model(m, lp);
+      name = "layered model, edge length " + path.substr(8);
+    }
+    else if(!read_model(path, m)) { status = EXIT_FAILURE; continue; }
     if(remesh)
     {
       Model remeshed;

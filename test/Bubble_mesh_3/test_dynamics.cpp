@@ -377,6 +377,33 @@ static void test_cloud(std::vector<Bubble>& result_1, std::vector<Bubble>& resul
   }
 }
 
+// -- 5b. a region many bubbles across: with every pair in reach attracting, the
+// cubic law condensed such a region into over-full clumps (ratios 20-45) beside
+// gaps, and population control traded bubbles between them without end (56 %
+// inside the bounds on a cube 28 radii wide); with attraction between adjacent
+// bubbles only, it settles with nearly every ratio inside
+static void test_no_clumps()
+{
+  // the whole pipeline: surface bubbles, their sizing field, the crowded start
+  const int n = 16;
+  const Model cube = make_cube(400., n);
+  const std::vector<Bubble> surface = BM::place_surface_bubbles(cube);
+  const BM::Surface_bubble_sizing_field<K> sizing(cube, surface);
+  std::vector<Bubble> interior = BM::place_initial_bubbles(cube, surface, sizing);
+  const BM::Relaxation_report rep = BM::relax_bubbles(cube, surface, interior, sizing);
+  const std::vector<double> alpha = BM::overlap_ratios(cube, surface, interior);
+  double worst = 0.;
+  for(double a : alpha) worst = (std::max)(worst, a);
+  std::cout << "cube " << 400. / interior.front().radius << " radii wide: " << interior.size() << " bubbles, " << rep.steps << " steps, "
+            << rep.regions[0].rounds << " rounds, settled " << rep.regions[0].population_settled << "; overlap ratio "
+            << rep.below << " below 10, " << rep.inside << " in [10,14], " << rep.above << " above 14 ("
+            << 100. * rep.share_inside_bounds() << " % inside), largest " << worst << std::endl;
+  print_histogram(rep.overlap_histogram);
+  assert(rep.converged());
+  assert(rep.share_inside_bounds() >= 0.95);
+  assert(worst < 16.);
+}
+
 // -- 6. the default layered model: placement, then relaxation; checked with
 // CGAL::Side_of_triangle_mesh on each region's closed boundary (the dynamics
 // use their own ray parity)
@@ -454,6 +481,7 @@ int main()
   }
   std::cout << "1 vs 2 threads: " << one.size() << " bubbles, " << differ << " differ bit-wise" << std::endl;
   assert(differ == 0);
+  test_no_clumps();
   test_layered_model();
   return EXIT_SUCCESS;
 }

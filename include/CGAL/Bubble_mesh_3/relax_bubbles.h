@@ -19,10 +19,12 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <mutex>
 #include <type_traits>
 #include <utility>
@@ -307,16 +309,20 @@ private:
   // f(w) (r_i + r_j) / l with w = l / (r_i + r_j), the pair force over the distance
   double force_over_distance(double l, double sum) const { return law_(l / sum) * sum / l; }
 
-  // the pair force on a bubble at (dx, dy, dz) = x_i - x_j from j, over the distance, with
-  // s = r_i + r_j, added to f; `sign` parts coincident centres reproducibly (by index)
-  void add_pair(double dx, double dy, double dz, double sum, double sign, double& fx, double& fy, double& fz) const
+  // the pair force on a bubble i at (dx, dy, dz) = x_i - x_j from j, over the distance, with
+  // s = r_i + r_j, added to f; `sign` parts coincident centres reproducibly (by index); an
+  // attraction is scaled by `weight()`, the pair's adjacency (see attraction_weights())
+  template <class Weight>
+  void add_pair(double dx, double dy, double dz, double sum, double sign, const Weight& weight, double& fx, double& fy,
+                double& fz) const
   {
     const double d2 = dx * dx + dy * dy + dz * dz, cut = law_.cutoff() * sum;
     // out of reach: no division, no square root (the lists are short, so this is rare)
     if(d2 >= cut * cut) return;
     if(d2 > 1e-24 * sum * sum)
     {
-      const double mag = force_over_distance(std::sqrt(d2), sum);
+      double mag = force_over_distance(std::sqrt(d2), sum);
+      if(mag < 0.) mag *= double(weight());
       fx += mag * dx; fy += mag * dy; fz += mag * dz;
     }
     else
@@ -335,26 +341,27 @@ private:
   */
   template <bool skip_strays>
   void sum_list(std::size_t i, double xi, double yi, double zi, double ri, const double* P,
-                const std::uint32_t* first, const std::uint32_t* last, const unsigned char* stray,
-                double& fx_out, double& fy_out, double& fz_out) const
+                const std::uint32_t* first, const std::uint32_t* last, const float* weight,
+                const unsigned char* stray, double& fx_out, double& fy_out, double& fz_out) const
   {
     // (sums in locals: through the references they would go to memory at every pair)
     double fx = fx_out, fy = fy_out, fz = fz_out;
     constexpr std::size_t chunk = 64;
-    alignas(16) double DX[chunk], DY[chunk], DZ[chunk], S[chunk], D2[chunk], M[chunk];
+    alignas(16) double DX[chunk], DY[chunk], DZ[chunk], S[chunk], D2[chunk], M[chunk], A[chunk];
     std::uint32_t J[chunk];
     const double cutoff = law_.cutoff();
     while(first != last)
     {
       const std::uint32_t* stop = last - first > std::ptrdiff_t(chunk) ? first + chunk : last;
       std::size_t m = 0;
-      for(const std::uint32_t* it = first; it != stop; ++it)
+      for(const std::uint32_t* it = first; it != stop; ++it, ++weight)
       {
         const std::uint32_t j = *it;
         const double* q = P + 4 * std::size_t(j);
         const double dx = xi - q[0], dy = yi - q[1], dz = zi - q[2], sum = ri + q[3];
         const double d2 = dx * dx + dy * dy + dz * dz, cut = cutoff * sum;
         DX[m] = dx; DY[m] = dy; DZ[m] = dz; S[m] = sum; D2[m] = d2; J[m] = j;
+        A[m] = double(*weight);
         bool in = d2 < cut * cut;
         if(skip_strays) in = in & (stray[j] == 0); // (not &&: that is a branch again)
         m += in ? 1 : 0;
@@ -372,6 +379,8 @@ private:
       }
 #endif
       for(; t < m; ++t) M[t] = force_over_distance(std::sqrt(D2[t]), S[t]);
+      // attraction (M < 0) only as far as the pair is adjacent (see attraction_weights())
+      for(t = 0; t < m; ++t) M[t] *= M[t] < 0. ? A[t] : 1.;
       for(t = 0; t < m; ++t)
       {
         if(D2[t] > 1e-24 * S[t] * S[t])
@@ -396,6 +405,7 @@ private:
       for(std::size_t i = b; i < e; ++i) { P[4 * i] = X[i]; P[4 * i + 1] = Y[i]; P[4 * i + 2] = Z[i]; P[4 * i + 3] = R[i]; }
     });
     const std::uint32_t* nb = nbr_.data();
+    const float* aw = attraction_.data();
     const std::size_t* off = offset_.data();
     const unsigned char* stray = is_stray_.data();
     const bool strays = !strays_.empty();
@@ -404,8 +414,9 @@ private:
       {
         const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
         double fx = 0., fy = 0., fz = 0.;
-        if(!strays) sum_list<false>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], stray, fx, fy, fz);
-        else if(!stray[i]) sum_list<true>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], stray, fx, fy, fz);
+        if(!strays) sum_list<false>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], aw + off[i], stray, fx, fy, fz);
+        else if(!stray[i])
+          sum_list<true>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], aw + off[i], stray, fx, fy, fz);
         FX[i] = fx; FY[i] = fy; FZ[i] = fz;
       }
     });
@@ -427,7 +438,8 @@ private:
       grid_.for_each_near_packed(xi, yi, zi, cutoff * ri, b, [&](std::size_t j, const double*) {
         if(j == i || is_stray_[j]) return;
         double fx = 0., fy = 0., fz = 0.;
-        add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., fx, fy, fz);
+        add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., [&] { return stray_weight(i, j); },
+                 fx, fy, fz);
         FX[i] += fx; FY[i] += fy; FZ[i] += fz;
         if(j < n) { FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz; }
       });
@@ -437,7 +449,8 @@ private:
       {
         const std::size_t i = strays_[a], j = strays_[c];
         double fx = 0., fy = 0., fz = 0.;
-        add_pair(X[i] - X[j], Y[i] - Y[j], Z[i] - Z[j], R[i] + R[j], -1., fx, fy, fz);
+        add_pair(X[i] - X[j], Y[i] - Y[j], Z[i] - Z[j], R[i] + R[j], -1., [&] { return stray_weight(i, j); }, fx, fy,
+                 fz);
         FX[i] += fx; FY[i] += fy; FZ[i] += fz;
         FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz;
       }
@@ -482,7 +495,7 @@ private:
     const std::size_t block = 1024, nb = (n + block - 1) / block;
     // per block of bubbles, reused from one rebuild to the next (no allocation once warm)
     std::vector<std::vector<std::uint32_t> >& lists = lists_;
-    if(lists.size() < nb) lists.resize(nb);
+    if(lists.size() < nb) { lists.resize(nb); weight_lists_.resize(nb); }
     std::vector<std::size_t>& counts = counts_;
     counts.assign(n, 0);
     inv_mass_.resize(n);
@@ -492,10 +505,12 @@ private:
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
       // the pairs within the cutoff of the bubble at hand, in list order: d2 and r_i + r_j
       std::vector<double> close_d2, close_sum;
+      std::vector<double> near;
       for(std::size_t bk = b0; bk < b1; ++bk)
       {
         // `out` only grows; its first `used` entries are the block's lists
         std::vector<std::uint32_t>& out = lists[bk];
+        std::vector<float>& wout = weight_lists_[bk];
         std::size_t used = 0;
         for(std::size_t i = bk * block; i < (std::min)(n, (bk + 1) * block); ++i)
         {
@@ -526,8 +541,10 @@ private:
             used += u;
             close += c;
           });
-          counts[i] = used - before;
           scale_mass(i, stiffness_sum(close_d2.data(), close_sum.data(), close));
+          if(wout.size() < out.size()) wout.resize(out.size());
+          used = before + attraction_weights(i, out.data() + before, wout.data() + before, used - before, near);
+          counts[i] = used - before;
         }
         list_sizes_[bk] = used;
       }
@@ -535,10 +552,15 @@ private:
     offset_.assign(n + 1, 0);
     for(std::size_t i = 0; i < n; ++i) offset_[i + 1] = offset_[i] + counts[i];
     nbr_.resize(offset_[n]);
+    attraction_.resize(offset_[n]);
     for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
       for(std::size_t bk = b0; bk < b1; ++bk)
         if(list_sizes_[bk] > 0)
+        {
           std::copy(lists[bk].begin(), lists[bk].begin() + list_sizes_[bk], nbr_.begin() + offset_[bk * block]);
+          std::copy(weight_lists_[bk].begin(), weight_lists_[bk].begin() + list_sizes_[bk],
+                    attraction_.begin() + offset_[bk * block]);
+        }
     });
   }
 
@@ -618,12 +640,114 @@ private:
   std::vector<double> ke_, disp_;
   std::vector<double> rx_, ry_, rz_, rr_;                 // positions and radii at the last list rebuild
   std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
+  /*
+  Only adjacent bubbles attract (the paper: the force "only works when two
+  bubbles are within a specified distance and adjacent to each other"). Two
+  bubbles are adjacent unless a third bubble's centre lies inside the ball
+  whose diameter joins theirs (the Gabriel test; a pair so shadowed is no
+  Gabriel edge). A shadowed pair keeps the repulsive part of the law and
+  loses the attractive one. Why: with every pair in reach attracting, a dense
+  clump costs less energy than the packing at rest (12 neighbours at w = 0.7
+  cost nearly nothing, and the many second neighbours then within w < 1.5 all
+  attract), so large regions condensed into over-full clumps beside gaps, and
+  population control traded bubbles between them without end.
+  The weight fades from 1 to 0 while the nearest third centre goes from the
+  ball's sphere to `shadow_ramp` of its radius (squared), so that a bubble
+  crossing the sphere changes the force by little: the weights are taken at
+  each list rebuild, and a switch there would keep bubbles near rest moving.
+  Entry e of the list gets weight[e]. Entries of weight 0 farther than
+  1 + 2 skin times the sum of radii are dropped (the new count is returned):
+  before the next rebuild they cannot come close enough to repel.
+  */
+  std::size_t attraction_weights(std::size_t i, std::uint32_t* entries, float* weight, std::size_t count,
+                                 std::vector<double>& near) const
+  {
+    const double xi = s_.x[i], yi = s_.y[i], zi = s_.z[i], ri = s_.r[i];
+    // x, y, z and squared length of each x_k - x_i, by coordinate, padded to an even count
+    // with a far point (it is in no ball)
+    const std::size_t m = count + (count & 1);
+    near.resize(4 * m);
+    double *KX = near.data(), *KY = KX + m, *KZ = KY + m, *KD = KZ + m;
+    for(std::size_t e = 0; e < count; ++e)
+    {
+      const std::size_t j = entries[e];
+      const double ax = s_.x[j] - xi, ay = s_.y[j] - yi, az = s_.z[j] - zi;
+      KX[e] = ax; KY[e] = ay; KZ[e] = az; KD[e] = ax * ax + ay * ay + az * az;
+    }
+    if(m > count) { KX[count] = KY[count] = KZ[count] = 0.; KD[count] = (std::numeric_limits<double>::max)(); }
+    // a pair this close cannot attract before the next rebuild
+    const double close = (std::max)(0., 1. - 2. * st_.skin), far = 1. + 2. * st_.skin;
+    for(std::size_t e = 0; e < count; ++e)
+    {
+      const double sum = ri + s_.r[entries[e]], ajx = KX[e], ajy = KY[e], ajz = KZ[e], aj2 = KD[e];
+      if(aj2 < close * close * sum * sum) { weight[e] = 1.f; continue; }
+      // the smallest (x_k - x_i).(x_k - x_j) over the list: negative inside the ball on
+      // [i, j] only, where |x_k - x_i| < |x_j - x_i| (k = j gives 0)
+      double inside = 0.;
+      std::size_t k = 0;
+#ifdef __SSE2__
+      __m128d lo = _mm_setzero_pd();
+      const __m128d bx = _mm_set1_pd(ajx), by = _mm_set1_pd(ajy), bz = _mm_set1_pd(ajz);
+      for(; k < m; k += 2)
+      {
+        const __m128d dot = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_loadu_pd(KX + k), bx), _mm_mul_pd(_mm_loadu_pd(KY + k), by)),
+                                       _mm_mul_pd(_mm_loadu_pd(KZ + k), bz));
+        lo = _mm_min_pd(lo, _mm_sub_pd(_mm_loadu_pd(KD + k), dot));
+      }
+      alignas(16) double two[2];
+      _mm_store_pd(two, lo);
+      inside = (std::min)(two[0], two[1]);
+#endif
+      for(; k < m; ++k) inside = (std::min)(inside, KD[k] - ((KX[k] * ajx + KY[k] * ajy) + KZ[k] * ajz));
+      weight[e] = weight_of(1. + 4. * inside / aj2);
+    }
+    // drop what cannot act before the next rebuild: too far to repel, shadowed from attracting
+    std::size_t kept = 0;
+    for(std::size_t e = 0; e < count; ++e)
+    {
+      const double sum = far * (ri + s_.r[entries[e]]);
+      if(weight[e] == 0.f && KD[e] > sum * sum) continue;
+      entries[kept] = entries[e];
+      weight[kept] = weight[e];
+      ++kept;
+    }
+    return kept;
+  }
+
+  static constexpr double shadow_ramp = 0.75;
+  static float weight_of(double rho2) { return float((std::max)(0., rho2 - shadow_ramp) / (1. - shadow_ramp)); }
+
+  /*
+  The weight of the pair of a stray i with j, as its list would have had it
+  with a skin wide enough: the same test on the positions of the last list
+  rebuild (the grid's), over the bubbles filed near the pair's midpoint.
+  */
+  float stray_weight(std::size_t i, std::size_t j) const
+  {
+    const std::size_t n = s_.n_free;
+    const double xi = i < n ? rx_[i] : s_.x[i], yi = i < n ? ry_[i] : s_.y[i], zi = i < n ? rz_[i] : s_.z[i];
+    const double ax = (j < n ? rx_[j] : s_.x[j]) - xi, ay = (j < n ? ry_[j] : s_.y[j]) - yi,
+                 az = (j < n ? rz_[j] : s_.z[j]) - zi;
+    const double aj2 = ax * ax + ay * ay + az * az;
+    double inside = 0.;
+    grid_.for_each_near_packed(xi + 0.5 * ax, yi + 0.5 * ay, zi + 0.5 * az, 0.5 * std::sqrt(aj2), 0.,
+                               [&](std::size_t k, const double* q) {
+      if(k == i || k == j) return;
+      const double kx = q[0] - xi, ky = q[1] - yi, kz = q[2] - zi;
+      inside = (std::min)(inside, (kx * kx + ky * ky + kz * kz) - ((kx * ax + ky * ay) + kz * az));
+    });
+    return weight_of(1. + 4. * inside / aj2);
+  }
+
+
   std::vector<double> xyzr_;                              // forces()'s work space
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> nbr_;
   std::vector<std::uint32_t> strays_;                    // free bubbles beyond their lists' skin, increasing
   std::vector<unsigned char> is_stray_;                  // per bubble (fixed ones never stray)
+  std::vector<float> attraction_;                        // per list entry, see attraction_weights()
   std::vector<std::vector<std::uint32_t> > lists_;       // rebuild_lists()'s work space
+  std::vector<std::vector<float> > weight_lists_;        // rebuild_lists()'s work space
   std::vector<std::size_t> counts_;
   std::vector<std::size_t> list_sizes_;                  // entries of lists_[b] in use
   std::size_t rebuilds_ = 0;
@@ -803,6 +927,23 @@ bubbles drifting into larger sizes grow, push their neighbours on and never
 come to rest (CloudSpin's relaxation took 247 s so, 53 s with the radii held
 and the round budget).
 Every population round reads them afresh.
+
+<b>Only adjacent bubbles attract.</b> The paper's force "only works when two
+bubbles are within a specified distance and adjacent to each other". Two
+bubbles count as adjacent unless the centre of a third one (interior or
+surface) lies inside the ball whose diameter joins their centres (the
+Gabriel test, decided at each rebuild of the neighbour lists); a pair that
+is not keeps the repulsive part of the law (\f$ w < 1 \f$) and loses the
+attractive one, gradually: the attraction fades from full to none while the
+third centre goes from the ball's sphere to \f$ \sqrt{0.75} \f$ of its
+radius, so that bubbles crossing a sphere near rest do not jolt their
+neighbours. With every pair in reach attracting, the cubic law
+makes dense clumps cheaper than the packing at rest (twelve neighbours at
+\f$ w = 0.7 \f$ cost nearly nothing, and the many second neighbours then
+within \f$ w < 1.5 \f$ all attract): large regions condensed into over-full
+clumps beside gaps, and population control traded bubbles between them
+without end. On a 400 m cube with uniform 25 m surface triangles the share
+of overlap ratios in [10, 14] went from 56 % to 99.9 % (bench/README.md).
 
 <b>Defaults.</b> \f$ m = k = 1 \f$ fix the units of time and force, so only
 the ratios matter. The damping \f$ c = 2\sqrt{mk} \f$ is critical for one
