@@ -252,7 +252,19 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool
       // the bundled model's generator at another size: a scale study on clean surfaces
       BM::Layered_model_parameters lp;
       lp.edge_length = std::atof(path.c_str() + 8);
-      BM::make_layered_model(m, lp);
+      if(!(lp.edge_length > 0.))
+      {
+        std::cerr << path << ": the edge length after 'layered:' must be a positive number" << std::endl;
+        status = EXIT_FAILURE;
+        continue;
+      }
+      try { BM::make_layered_model(m, lp); }
+      catch(const std::exception& e)
+      {
+        std::cerr << path << ": " << e.what() << std::endl;
+        status = EXIT_FAILURE;
+        continue;
+      }
       name = "layered model, edge length " + path.substr(8);
     }
     else if(!read_model(path, m)) { status = EXIT_FAILURE; continue; }

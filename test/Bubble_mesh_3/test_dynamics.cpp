@@ -379,9 +379,9 @@ static void test_cloud(std::vector<Bubble>& result_1, std::vector<Bubble>& resul
 
 // -- 5b. a region many bubbles across: with every pair in reach attracting, the
 // cubic law condensed such a region into over-full clumps (ratios 20-45) beside
-// gaps, and population control traded bubbles between them without end (56 %
-// inside the bounds on a cube 28 radii wide); with attraction between adjacent
-// bubbles only, it settles with nearly every ratio inside
+// gaps, and population control traded bubbles between them without end (this
+// cube: 44.9 % inside the bounds, largest ratio 45, not converged); with
+// attraction between adjacent bubbles only, it settles with nearly every ratio inside
 static void test_no_clumps()
 {
   // the whole pipeline: surface bubbles, their sizing field, the crowded start

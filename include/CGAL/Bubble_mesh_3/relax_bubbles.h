@@ -19,7 +19,6 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -630,16 +629,6 @@ private:
     damping_[i] = st_.damping * std::sqrt(m / st_.mass);
   }
 
-  Bubble_system<K>& s_;
-  ForceLaw law_;
-  const SizingField& sizing_;
-  Dynamics_settings st_;
-  Bubble_grid grid_;
-  std::vector<double> px_, py_, pz_, pvx_, pvy_, pvz_;   // predicted state (px_ also holds the fixed bubbles)
-  std::vector<double> f0x_, f0y_, f0z_, f1x_, f1y_, f1z_;
-  std::vector<double> ke_, disp_;
-  std::vector<double> rx_, ry_, rz_, rr_;                 // positions and radii at the last list rebuild
-  std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
   /*
   Only adjacent bubbles attract (the paper: the force "only works when two
   bubbles are within a specified distance and adjacent to each other"). Two
@@ -698,7 +687,7 @@ private:
       _mm_store_pd(two, lo);
       inside = (std::min)(two[0], two[1]);
 #endif
-      for(; k < m; ++k) inside = (std::min)(inside, KD[k] - ((KX[k] * ajx + KY[k] * ajy) + KZ[k] * ajz));
+      for(; k < m; ++k) inside = (std::min)(inside, shadow_depth(KX[k], KY[k], KZ[k], KD[k], ajx, ajy, ajz));
       weight[e] = weight_of(1. + 4. * inside / aj2);
     }
     // drop what cannot act before the next rebuild: too far to repel, shadowed from attracting
@@ -717,6 +706,14 @@ private:
   static constexpr double shadow_ramp = 0.75;
   static float weight_of(double rho2) { return float((std::max)(0., rho2 - shadow_ramp) / (1. - shadow_ramp)); }
 
+  // (x_k - x_i).(x_k - x_j) from k = x_k - x_i, its squared length kd and a = x_j - x_i:
+  // negative exactly when x_k is inside the ball on [x_i, x_j] (the SSE2 loop above
+  // does the same operations in the same order)
+  static double shadow_depth(double kx, double ky, double kz, double kd, double ax, double ay, double az)
+  {
+    return kd - ((kx * ax + ky * ay) + kz * az);
+  }
+
   /*
   The weight of the pair of a stray i with j, as its list would have had it
   with a skin wide enough: the same test on the positions of the last list
@@ -734,12 +731,21 @@ private:
                                [&](std::size_t k, const double* q) {
       if(k == i || k == j) return;
       const double kx = q[0] - xi, ky = q[1] - yi, kz = q[2] - zi;
-      inside = (std::min)(inside, (kx * kx + ky * ky + kz * kz) - ((kx * ax + ky * ay) + kz * az));
+      inside = (std::min)(inside, shadow_depth(kx, ky, kz, kx * kx + ky * ky + kz * kz, ax, ay, az));
     });
     return weight_of(1. + 4. * inside / aj2);
   }
 
-
+  Bubble_system<K>& s_;
+  ForceLaw law_;
+  const SizingField& sizing_;
+  Dynamics_settings st_;
+  Bubble_grid grid_;
+  std::vector<double> px_, py_, pz_, pvx_, pvy_, pvz_;   // predicted state (px_ also holds the fixed bubbles)
+  std::vector<double> f0x_, f0y_, f0z_, f1x_, f1y_, f1z_;
+  std::vector<double> ke_, disp_;
+  std::vector<double> rx_, ry_, rz_, rr_;                 // positions and radii at the last list rebuild
+  std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
   std::vector<double> xyzr_;                              // forces()'s work space
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> nbr_;
@@ -942,8 +948,9 @@ makes dense clumps cheaper than the packing at rest (twelve neighbours at
 \f$ w = 0.7 \f$ cost nearly nothing, and the many second neighbours then
 within \f$ w < 1.5 \f$ all attract): large regions condensed into over-full
 clumps beside gaps, and population control traded bubbles between them
-without end. On a 400 m cube with uniform 25 m surface triangles the share
-of overlap ratios in [10, 14] went from 56 % to 99.9 % (bench/README.md).
+without end. On a 400 m cube with 25 m squares on its faces (test_dynamics)
+the share of overlap ratios in [10, 14] went from 45 % to 99.9 %
+(bench/README.md).
 
 <b>Defaults.</b> \f$ m = k = 1 \f$ fix the units of time and force, so only
 the ratios matter. The damping \f$ c = 2\sqrt{mk} \f$ is critical for one
