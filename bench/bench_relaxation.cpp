@@ -52,8 +52,9 @@ typedef BM::Bubble<K> Bubble;
 namespace {
 
 const char* usage =
-  "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin S]\n"
-  "       bench_relaxation alpha [MODEL ...] [--threads N] [--rounds] [--remesh-surfaces] [--repulsive]\n"
+  "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin LIST]\n"
+  "       bench_relaxation alpha [MODEL ...] [--threads N] [--skin S] [--rounds]\n"
+  "                            [--remesh-surfaces] [--repulsive]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -65,7 +66,9 @@ const char* usage =
   "            as the visitor sees it), over the whole call (set-up included), and\n"
   "            the process CPU time of the call; the result must be the same for every\n"
   "            thread count (checked), and the neighbour-list rebuilds. --skin sets\n"
-  "            relax_bubbles()'s neighbor_skin (default 0.15, its own default).\n"
+  "            relax_bubbles()'s neighbor_skin (default: its own default); a\n"
+  "            list (0.15,0.25,0.15,0.25) runs every thread count for each in turn,\n"
+  "            from the same start: interleaved runs, for A/B on a noisy machine.\n"
   "alpha       for each MODEL (default: the bundled layered_model.obj and every .ml in\n"
   "            ../shared/data/geomodels next to the checkout): surface bubbles, placement\n"
   "            and relax_bubbles() with default parameters on N threads (default 1);\n"
@@ -78,7 +81,7 @@ const char* usage =
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
   "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n"
   "            A MODEL written layered:E is the bundled model made at longest surface\n"
-  "            edge E (make_layered_model; 80 is the bundled size).\n";
+  "            edge E (make_layered_model; 80 is the bundled size). --skin as above.\n";
 
 double cpu_seconds()
 {
@@ -165,7 +168,7 @@ bool read_model(const std::string& path, Model& m)
 }
 
 int throughput(double edge_length, std::size_t steps, std::size_t warmup, const std::vector<std::size_t>& thread_counts,
-               double skin)
+               const std::vector<double>& skins)
 {
   Model m;
   BM::Layered_model_parameters lp;
@@ -182,48 +185,52 @@ int throughput(double edge_length, std::size_t steps, std::size_t warmup, const 
             << surface.size() << " surface bubbles, " << placed << " placed, " << start.size()
             << " interior bubbles after one population pass (" << t.time() << " s)" << std::endl;
 
-  std::vector<Bubble> first_result;
-  double one_thread = 0.;
-  for(std::size_t threads : thread_counts)
+  for(double skin : skins)
   {
-    std::vector<Bubble> interior = start;
-    Step_clock clock;
-    clock.warmup = warmup;
-    const std::string load = load_average();
-    const double c0 = cpu_seconds();
-    const BM::Relaxation_report rep = BM::relax_bubbles(
-      m, surface, interior, sizing,
-      params::number_of_threads(
-        threads, params::number_of_population_rounds(
-                   0, params::number_of_relaxation_steps(
-                        steps, params::displacement_tolerance(
-                                 0., params::neighbor_skin(skin, params::visitor(std::ref(clock))))))));
-    const double cpu = cpu_seconds() - c0;
-    const double step_wall = clock.last - clock.first;
-    const double rate = clock.timed_bubble_steps / step_wall;
-    if(threads == thread_counts.front()) one_thread = rate;
-    std::cout << std::fixed << std::setprecision(3) << "  " << threads << " thread(s): " << rep.steps
-              << " region-steps, " << rep.bubble_steps << " bubble-steps; steps " << warmup + 1 << " to " << steps << ": "
-              << clock.timed_bubble_steps << " bubble-steps in " << step_wall << " s wall -> "
-              << std::setprecision(0) << rate << " bubble-steps/s (" << rate / double(threads) << " per thread)"
-              << std::setprecision(3) << ", " << clock.cpu_last - clock.cpu_first << " s CPU -> " << std::setprecision(0)
-              << clock.timed_bubble_steps / (clock.cpu_last - clock.cpu_first) << " per CPU second"
-              << std::setprecision(3) << "; whole call " << rep.seconds << " s wall, " << cpu << " s CPU -> "
-              << std::setprecision(0) << rep.bubble_steps / rep.seconds << " bubble-steps/s wall, "
-              << rep.bubble_steps / cpu << " per CPU second; " << rep.list_rebuilds << " list rebuilds"
-              << std::setprecision(2);
-    if(threads != thread_counts.front()) std::cout << "; speed-up " << rate / one_thread;
-    std::cout << "; load before: " << load << "; result hash " << std::hex << result_hash(interior) << std::dec
-              << std::endl;
-    if(first_result.empty()) first_result = interior;
-    else
+    if(skins.size() > 1) std::cout << " neighbor_skin " << skin << ":" << std::endl;
+    std::vector<Bubble> first_result;
+    double one_thread = 0.;
+    for(std::size_t threads : thread_counts)
     {
-      bool same = first_result.size() == interior.size();
-      for(std::size_t i = 0; same && i < interior.size(); ++i)
-        same = first_result[i].center == interior[i].center && first_result[i].radius == interior[i].radius;
-      std::cout << "    same result as with " << thread_counts.front() << " thread(s): " << (same ? "yes" : "NO")
+      std::vector<Bubble> interior = start;
+      Step_clock clock;
+      clock.warmup = warmup;
+      const std::string load = load_average();
+      const double c0 = cpu_seconds();
+      const BM::Relaxation_report rep = BM::relax_bubbles(
+        m, surface, interior, sizing,
+        params::number_of_threads(
+          threads, params::number_of_population_rounds(
+                     0, params::number_of_relaxation_steps(
+                          steps, params::displacement_tolerance(
+                                   0., params::neighbor_skin(skin, params::visitor(std::ref(clock))))))));
+      const double cpu = cpu_seconds() - c0;
+      const double step_wall = clock.last - clock.first;
+      const double rate = clock.timed_bubble_steps / step_wall;
+      if(threads == thread_counts.front()) one_thread = rate;
+      std::cout << std::fixed << std::setprecision(3) << "  " << threads << " thread(s): " << rep.steps
+                << " region-steps, " << rep.bubble_steps << " bubble-steps; steps " << warmup + 1 << " to " << steps << ": "
+                << clock.timed_bubble_steps << " bubble-steps in " << step_wall << " s wall -> "
+                << std::setprecision(0) << rate << " bubble-steps/s (" << rate / double(threads) << " per thread)"
+                << std::setprecision(3) << ", " << clock.cpu_last - clock.cpu_first << " s CPU -> " << std::setprecision(0)
+                << clock.timed_bubble_steps / (clock.cpu_last - clock.cpu_first) << " per CPU second"
+                << std::setprecision(3) << "; whole call " << rep.seconds << " s wall, " << cpu << " s CPU -> "
+                << std::setprecision(0) << rep.bubble_steps / rep.seconds << " bubble-steps/s wall, "
+                << rep.bubble_steps / cpu << " per CPU second; " << rep.list_rebuilds << " list rebuilds"
+                << std::setprecision(2);
+      if(threads != thread_counts.front()) std::cout << "; speed-up " << rate / one_thread;
+      std::cout << "; load before: " << load << "; result hash " << std::hex << result_hash(interior) << std::dec
                 << std::endl;
-      if(!same) return EXIT_FAILURE;
+      if(first_result.empty()) first_result = interior;
+      else
+      {
+        bool same = first_result.size() == interior.size();
+        for(std::size_t i = 0; same && i < interior.size(); ++i)
+          same = first_result[i].center == interior[i].center && first_result[i].radius == interior[i].radius;
+        std::cout << "    same result as with " << thread_counts.front() << " thread(s): " << (same ? "yes" : "NO")
+                  << std::endl;
+        if(!same) return EXIT_FAILURE;
+      }
     }
   }
   return EXIT_SUCCESS;
@@ -235,8 +242,8 @@ double quantile(const std::vector<double>& sorted, double q)
   return sorted[std::size_t(q * double(sorted.size() - 1) + 0.5)];
 }
 
-int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool print_rounds, bool remesh,
-                bool repulsive)
+int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
+                bool remesh, bool repulsive)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -286,7 +293,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, bool
     clock.print_rounds = print_rounds;
     const std::string load = load_average();
     const double c0 = cpu_seconds();
-    const auto np = params::number_of_threads(threads, params::visitor(std::ref(clock)));
+    const auto np = params::number_of_threads(threads, params::neighbor_skin(skin, params::visitor(std::ref(clock))));
     const BM::Relaxation_report rep =
       repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), np))
                 : BM::relax_bubbles(m, surface, interior, sizing, np);
@@ -366,7 +373,7 @@ int main(int argc, char** argv)
   const bool alpha = std::strcmp(argv[1], "alpha") == 0;
   double edge_length = 12.;
   std::size_t steps = 100, warmup = 20;
-  double skin = 0.15; // relax_bubbles()'s default
+  std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
   bool print_rounds = false, remesh = false, repulsive = false;
@@ -377,7 +384,14 @@ int main(int argc, char** argv)
     if(a == "--edge-length" && has_value) edge_length = std::atof(argv[++i]);
     else if(a == "--steps" && has_value) steps = std::size_t(std::atol(argv[++i]));
     else if(a == "--warmup" && has_value) warmup = std::size_t(std::atol(argv[++i]));
-    else if(a == "--skin" && has_value) skin = std::atof(argv[++i]);
+    else if(a == "--skin" && has_value)
+    {
+      skins.clear();
+      std::stringstream list(argv[++i]);
+      std::string item;
+      while(std::getline(list, item, ','))
+        skins.push_back(std::atof(item.c_str()));
+    }
     else if(a == "--rounds" && alpha) print_rounds = true;
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
     else if(a == "--repulsive" && alpha) repulsive = true;
@@ -395,7 +409,8 @@ int main(int argc, char** argv)
     }
     else models.push_back(a);
   }
-  if(threads.empty() || !(edge_length > 0.) || !(skin > 0.) || warmup == 0 || warmup >= steps)
+  const bool bad_skin = skins.empty() || std::any_of(skins.begin(), skins.end(), [](double s) { return !(s > 0.); });
+  if(threads.empty() || !(edge_length > 0.) || bad_skin || warmup == 0 || warmup >= steps)
   {
     std::cerr << usage;
     return 2;
@@ -403,7 +418,7 @@ int main(int argc, char** argv)
   std::cout << "command:";
   for(int i = 0; i < argc; ++i) std::cout << " " << argv[i];
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
-  if(!alpha) return throughput(edge_length, steps, warmup, threads, skin);
+  if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), print_rounds, remesh, repulsive);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, repulsive);
 }

@@ -118,7 +118,7 @@ struct Dynamics_settings
   std::size_t population_rounds = 12;
   double population_tolerance = 0.002;
   double insertion_clearance = 0.7;
-  double skin = 0.15;
+  double skin = 0.25;
   double max_step = 0.125;
   double radius_update = 0.1;
   std::size_t threads = 0;
@@ -146,7 +146,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.population_rounds = choose_parameter(get_parameter(np, internal_np::number_of_population_rounds), std::size_t(12));
   s.population_tolerance = choose_parameter(get_parameter(np, internal_np::population_tolerance), 0.002);
   s.insertion_clearance = choose_parameter(get_parameter(np, internal_np::insertion_clearance), 0.7);
-  s.skin = choose_parameter(get_parameter(np, internal_np::neighbor_skin), 0.15);
+  s.skin = choose_parameter(get_parameter(np, internal_np::neighbor_skin), 0.25);
   s.max_step = choose_parameter(get_parameter(np, internal_np::max_step_ratio), 0.125);
   s.radius_update = choose_parameter(get_parameter(np, internal_np::radius_update_ratio), 0.1);
   s.threads = choose_parameter(get_parameter(np, internal_np::dynamics_threads), std::size_t(0));
