@@ -11,23 +11,20 @@
 #include <CGAL/Bubble_mesh_3/Mesh_complex_3.h>
 #include <CGAL/Bubble_mesh_3/Surface_vertex_supports.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
+#include <CGAL/Bubble_mesh_3/internal/Point_index_tree.h>
 #include <CGAL/Bubble_mesh_3/internal/label_regions.h>
 #include <CGAL/Bubble_mesh_3/internal/recover_surface.h>
 #include <CGAL/Bubble_mesh_3/internal/tetrahedralization_parameters.h>
 
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <iostream>
+#include <iterator>
 #include <vector>
 
 namespace CGAL {
@@ -135,31 +132,19 @@ void mark_dropped_interior_points(const Geological_model_3<GeomTraits>& model,
   }
   if(interior.empty()) return;
 
-  typedef typename CGAL::Pointer_property_map<Point_3>::const_type                 Point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<GeomTraits> > Traits;
-  typedef CGAL::Kd_tree<Traits>                                                    Tree;
-  typedef CGAL::Fuzzy_sphere<Traits>                                               Sphere;
-
-  std::vector<std::size_t> kept, all_model(model.number_of_points());
+  std::vector<std::size_t> kept;
   for(std::size_t i = 0; i < interior.size(); ++i)
     if(!dropped[i]) kept.push_back(i);
-  for(std::size_t i = 0; i < all_model.size(); ++i) all_model[i] = i;
-  const Point_map interior_map = CGAL::make_property_map(interior);
-  const Point_map model_map = CGAL::make_property_map(model.points());
-  Tree interior_tree(kept.begin(), kept.end(), typename Tree::Splitter(), Traits(interior_map));
-  Tree model_tree(all_model.begin(), all_model.end(), typename Tree::Splitter(), Traits(model_map));
+  const Point_index_tree<GeomTraits> interior_tree(interior, kept.begin(), kept.end());
+  const Point_index_tree<GeomTraits> model_tree(model.points());
   std::vector<std::size_t> found;
-  // `inside` is the exact test; the search ball is a little larger
-  auto search = [&](const Tree& tree, const Point_map& map, const Point_3& center, double radius) {
-    found.clear();
-    tree.search(std::back_inserter(found), Sphere(center, radius * (1. + 1e-9), 0., Traits(map)));
-  };
+  // `inside` is the exact test (the trees report a little more than the ball)
   auto drop_in = [&](const Point_3& center, double radius, const std::array<std::size_t, 3>& corners,
                      auto&& inside) {
-    search(model_tree, model_map, center, radius);
+    model_tree.points_in_ball(center, radius, found);
     for(std::size_t i : found)
       if(i != corners[0] && i != corners[1] && i != corners[2] && inside(model.point(i))) return;
-    search(interior_tree, interior_map, center, radius);
+    interior_tree.points_in_ball(center, radius, found);
     for(std::size_t i : found)
       if(!dropped[i] && inside(interior[i]))
       {
@@ -178,7 +163,7 @@ void mark_dropped_interior_points(const Geological_model_3<GeomTraits>& model,
     double r2 = 0.;
     for(int k = 0; k < 3; ++k)
       r2 = (std::max)(r2, CGAL::to_double(CGAL::squared_distance(center, triangle.vertex(k))));
-    search(interior_tree, interior_map, center, std::sqrt(r2));
+    interior_tree.points_in_ball(center, std::sqrt(r2), found);
     for(std::size_t i : found)
       if(!dropped[i] && CGAL::coplanar(triangle[0], triangle[1], triangle[2], interior[i]) &&
          triangle.has_on(interior[i]))

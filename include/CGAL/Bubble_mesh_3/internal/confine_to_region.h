@@ -7,16 +7,12 @@
 #define CGAL_BUBBLE_MESH_3_INTERNAL_CONFINE_TO_REGION_H
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/Point_index_tree.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/assertions.h>
-#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <array>
@@ -379,20 +375,10 @@ private:
   // balls that span whole layers (modelA1: 361 bubbles in 7.8e11 m3).
   void collect_balls(const Geological_model_3<K>& model, const std::vector<double>& point_radius)
   {
-    typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
-    typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<K> > Search_traits;
-    typedef CGAL::Kd_tree<Search_traits> Point_tree;
-    const Point_map point_map = CGAL::make_property_map(model.points());
-    std::vector<std::size_t> indices(model.number_of_points());
-    for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    Point_tree point_tree(indices.begin(), indices.end(), typename Point_tree::Splitter(),
-                          Search_traits(point_map));
+    const Point_index_tree<K> point_tree(model.points());
     std::vector<std::size_t> found;
     auto holds_model_point = [&](const Point_3& center, double radius, auto&& strictly_inside) {
-      found.clear();
-      point_tree.search(std::back_inserter(found),
-                        CGAL::Fuzzy_sphere<Search_traits>(center, radius * (1. + 1e-9), 0.,
-                                                           Search_traits(point_map)));
+      point_tree.points_in_ball(center, radius, found);
       for(std::size_t i : found)
         if(strictly_inside(model.point(i))) return true;
       return false;
