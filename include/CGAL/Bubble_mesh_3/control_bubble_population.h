@@ -440,7 +440,9 @@ nearest neighbour is farthest (distance over the sum of radii). It is used if
 that clearance reaches `insertion_clearance` and the position is valid (no
 surface crossed from the parent, outside protected balls). Bubbles whose
 neighbour was just deleted are skipped: relaxation first closes that gap,
-and refilling it at once is how add/delete cycles start.
+and refilling it at once is how add/delete cycles start. A new bubble with
+less than half the lower bound is a parent in its turn, later in the same
+pass (it stands at the edge of an empty part).
 */
 template <class ConcurrencyTag, class K, class SizingField>
 Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing, const Dynamics_settings& settings)
@@ -491,10 +493,13 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
   const std::vector<std::array<double, 3> >& dirs = gap_directions();
   // a gap next to the bubble may open a little nearer or farther than touching
   const double gap_distances[3] = {1., 0.85, 1.2};
-  for(std::size_t i : order)
+  std::vector<double> nalpha; // the new bubbles' ratios
+  auto ratio = [&](std::size_t j) -> double& { return j < total ? alpha[j] : nalpha[j - total]; };
+  for(std::size_t o = 0; o < order.size(); ++o)
   {
-    if(!(alpha[i] < settings.min_overlap)) continue;
-    const double xi = s.x[i], yi = s.y[i], zi = s.z[i], ri = s.r[i];
+    const std::size_t i = order[o];
+    if(!(ratio(i) < settings.min_overlap)) continue;
+    const double xi = px(i), yi = py(i), zi = pz(i), ri = pr(i);
     std::vector<std::pair<double, std::size_t> > candidates;
     std::vector<std::array<double, 4> > spots;
     // the field varies on the scale of the mesh size: the parent's radius is
@@ -532,15 +537,23 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
       const std::size_t id = total + nx.size();
       nx.push_back(q[0]); ny.push_back(q[1]); nz.push_back(q[2]); nr.push_back(q[3]);
       nclear.push_back(s.confinement->clearance(q.data(), q[3]));
-      grid.insert(id, q[0], q[1], q[2], q[3]);
-      // the new bubble counts for its free neighbours at once
-      grid.for_each_near(q[0], q[1], q[2], q[3], 2., [&](std::size_t j) {
-        if(j >= n || !keep[j]) return;
-        const double dx = s.x[j] - q[0], dy = s.y[j] - q[1], dz = s.z[j] - q[2];
-        const double reach = 2. * s.r[j] + q[3];
-        const double l2 = dx * dx + dy * dy + dz * dz;
-        if(l2 < reach * reach) alpha[j] += (reach - std::sqrt(l2)) / s.r[j];
+      // the new bubble counts for its free neighbours at once, and they for it
+      double own = 0.;
+      grid.for_each_near(q[0], q[1], q[2], 2. * q[3], 2., [&](std::size_t j) {
+        if(!alive(j)) return;
+        const double dx = px(j) - q[0], dy = py(j) - q[1], dz = pz(j) - q[2];
+        const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
+        own += (std::max)(0., 2. * q[3] + pr(j) - l) / q[3];
+        if(j < n || j >= total) ratio(j) += (std::max)(0., 2. * pr(j) + q[3] - l) / pr(j);
       });
+      grid.insert(id, q[0], q[1], q[2], q[3]);
+      nalpha.push_back(own);
+      // A bubble inserted at the edge of an empty part of the region (the
+      // placement's lattice is coarser than the bubbles near fine surfaces)
+      // has fewer than half the neighbours wanted: it takes its turn as a
+      // parent in the same pass, so that the part fills at once and not by one
+      // layer of bubbles per round of a few hundred steps.
+      if(own < 0.5 * settings.min_overlap) order.push_back(id);
       ++change.added;
       break;
     }
@@ -654,7 +667,9 @@ bubbles below the lower bound a new bubble is inserted in the largest gap
 (the touching position, among 32 directions, farthest from all other
 bubbles), if that gap is wide enough and the position is inside the region
 and outside the protected diametral balls of its surfaces (see
-`relax_bubbles()`). Radii are first read from the sizing field.
+`relax_bubbles()`); a new bubble with less than half the lower bound stands
+at the edge of an empty part of the region and gets a neighbour of its own
+in the same pass. Radii are first read from the sizing field.
 
 `relax_bubbles()` alternates this pass with relaxation; call it alone to
 study or script the method. The output is grouped by region; inside a region
