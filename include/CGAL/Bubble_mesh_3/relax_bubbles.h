@@ -849,10 +849,11 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
       p.max_displacement = rep.max_displacement = f.max_displacement;
       if(!visitor(p)) { rep.interrupted = true; break; }
       if(f.max_displacement < tolerance) { rep.converged = true; break; }
-      // A few bubbles held against a surface by their neighbours jitter there for
-      // good (the confinement puts them back at every step, 1-2 % of their radius
-      // away); in a large region they would hold all the others for the whole
-      // step budget. One in ten thousand may, if it moves less than 20 tolerances.
+      // In a large region a few bubbles (near a surface, under a steady force but
+      // moving 0.5-2 % of their radius a step; the confinement is not what moves
+      // them, their steps stay inside their free balls) do not come to rest
+      // within the step budget, and they held all the others for the whole of
+      // it. One in ten thousand may go on moving, by less than 20 tolerances.
       if(f.max_displacement < 20. * tolerance && relaxer.moving_more_than(tolerance) <= s.n_free / 10000)
       {
         rep.converged = true;
@@ -1048,8 +1049,8 @@ the lower bound (the edge of an empty part of the region) is itself a parent
 later in the same pass, so that empty parts fill in one pass. A relaxation
 stops when the largest displacement of a step is under its tolerance, or
 when at most one bubble in ten thousand moves more than the tolerance and
-none more than 20 times it (bubbles held against a surface by their
-neighbours jitter there for good).
+none more than 20 times it (a few bubbles of a large region do not come to
+rest within the step budget).
 
 <b>Parallelism and determinism.</b> Regions relax independently (their
 surface bubbles are fixed) and, with `CGAL::Parallel_tag` and TBB, at the
