@@ -378,6 +378,14 @@ counts neighbours weighted by closeness; a perfect face-centred cubic packing
 at rest gives 12 + 6 (3 - 2 sqrt 2) = 13.03 (the 6 second neighbours at
 2 sqrt 2 r still add 0.17 each), a random close packing about 11.
 */
+// bubble j's term in bubble i's overlap ratio (METHOD.md, stage 4), times r_i:
+// max(0, 2 r_i + r_j - l_ij), from the squared distance l_ij^2
+inline double overlap_share(double l2, double ri, double rj)
+{
+  const double reach = 2. * ri + rj;
+  return l2 < reach * reach ? reach - std::sqrt(l2) : 0.;
+}
+
 template <class ConcurrencyTag, class K>
 std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Bubble_grid& grid)
 {
@@ -390,9 +398,7 @@ std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Bubble_grid&
       grid.for_each_near(xi, yi, zi, 2. * ri, 1., [&](std::size_t j) {
         if(j == i) return;
         const double dx = s.x[j] - xi, dy = s.y[j] - yi, dz = s.z[j] - zi;
-        const double reach = 2. * ri + s.r[j];
-        const double l2 = dx * dx + dy * dy + dz * dz;
-        if(l2 < reach * reach) sum += reach - std::sqrt(l2);
+        sum += overlap_share(dx * dx + dy * dy + dz * dz, ri, s.r[j]);
       });
       alpha[i] = sum / ri;
     }
@@ -469,11 +475,10 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
     grid.for_each_near(s.x[i], s.y[i], s.z[i], s.r[i], 2., [&](std::size_t j) {
       if(j == i || j >= n || !keep[j]) return;
       const double dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i], dz = s.z[j] - s.z[i];
-      const double reach = 2. * s.r[j] + s.r[i];
-      const double l2 = dx * dx + dy * dy + dz * dz;
-      if(l2 < reach * reach)
+      const double share = overlap_share(dx * dx + dy * dy + dz * dz, s.r[j], s.r[i]);
+      if(share > 0.)
       {
-        alpha[j] -= (reach - std::sqrt(l2)) / s.r[j];
+        alpha[j] -= share / s.r[j];
         near_deleted[j] = 1;
       }
     });
@@ -542,9 +547,9 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
       grid.for_each_near(q[0], q[1], q[2], 2. * q[3], 2., [&](std::size_t j) {
         if(!alive(j)) return;
         const double dx = px(j) - q[0], dy = py(j) - q[1], dz = pz(j) - q[2];
-        const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
-        own += (std::max)(0., 2. * q[3] + pr(j) - l) / q[3];
-        if(j < n || j >= total) ratio(j) += (std::max)(0., 2. * pr(j) + q[3] - l) / pr(j);
+        const double l2 = dx * dx + dy * dy + dz * dz;
+        own += overlap_share(l2, q[3], pr(j)) / q[3];
+        if(j < n || j >= total) ratio(j) += overlap_share(l2, pr(j), q[3]) / pr(j);
       });
       grid.insert(id, q[0], q[1], q[2], q[3]);
       nalpha.push_back(own);
