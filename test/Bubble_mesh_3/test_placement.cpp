@@ -295,13 +295,13 @@ static void test_silhouette_subsample()
 static void test_radius_rule()
 {
   // Hand-made: the unit tetrahedron with surface radii 0.1, 0.2, 0.3, 0.4.
-  // R0 = (0.4 + 0.1) / 2 = 0.25; weight point when l_j < 1.5 (0.25 + r_j),
-  // i.e. l < 0.525, 0.675, 0.825, 0.975.
+  // R0 = (0.4 + 0.1) / 2 = 0.25; weight point when l_j < L_j = 1.5 (0.25 + r_j),
+  // i.e. l < 0.525, 0.675, 0.825, 0.975; a weight point's weight is tapered by
+  // (1 - (l_j / L_j)^2)^2, and R0 is one more weight point, of weight
+  // 1 / (2 * 1.5 * R0) (inverse distance) or 1 / R0 (inverse radius).
   // p = (0.2,0.2,0.2): l_0 = sqrt(0.12) = 0.3464, l_1 = l_2 = l_3 = sqrt(0.72) = 0.8485
   // -> weight points 0 and 3 only.
-  //   inverse distance: w0 : w3 = sqrt6 : 1, R = (0.1 sqrt6 + 0.4) / (1 + sqrt6) = 0.186969
-  //   inverse radius:   w0 : w3 = 10 : 2.5,  R = (0.8 * 0.1 + 0.2 * 0.4)     = 0.16
-  // far away (5,5,5): no weight point -> R0 = 0.25; at vertex 1: its own radius 0.2.
+  // Far away (5,5,5): no weight point -> R0 = 0.25; at vertex 1: its own radius 0.2.
   const Model tet = make_tetrahedron();
   std::vector<Bubble> sb = BM::place_surface_bubbles(tet);
   for(std::size_t i = 0; i < 4; ++i) sb[i].radius = 0.1 * double(i + 1);
@@ -309,27 +309,50 @@ static void test_radius_rule()
   const BM::Surface_bubble_sizing_field<K> inv_r(tet, sb, BMP::radius_weighting(BM::Radius_weighting::INVERSE_RADIUS));
   const BM::Surface_bubble_sizing_field<K> scaled(tet, sb, BMP::region_scale_factors({1., 2.}));
   const Point_3 p(0.2, 0.2, 0.2);
-  const double s6 = std::sqrt(6.);
-  const double expected = (0.1 * s6 + 0.4) / (1. + s6);
+  const double l0 = std::sqrt(0.12), l1 = std::sqrt(0.72);
+  auto taper = [](double l, double reach) { const double u = 1. - (l / reach) * (l / reach); return u * u; };
+  const double t0 = taper(l0, 0.525), t3 = taper(l1, 0.975);
+  const double expected = (t0 / l0 * 0.1 + t3 / l1 * 0.4 + 0.25 / 0.75) / (t0 / l0 + t3 / l1 + 1. / 0.75);
+  const double expected_inv_r = (t0 / 0.1 * 0.1 + t3 / 0.4 * 0.4 + 0.25 / 0.25) / (t0 / 0.1 + t3 / 0.4 + 1. / 0.25);
   std::cout << "weight-point rule: inverse distance " << idw(p, 1) << " (" << expected << "), inverse radius "
-            << inv_r(p, 1) << " (0.16), no weight point " << idw(Point_3(5, 5, 5), 1) << " (0.25), at a vertex "
-            << idw(Point_3(1, 0, 0), 1) << " (0.2), scaled x2 " << scaled(p, 1) << "\n";
+            << inv_r(p, 1) << " (" << expected_inv_r << "), no weight point " << idw(Point_3(5, 5, 5), 1)
+            << " (0.25), at a vertex " << idw(Point_3(1, 0, 0), 1) << " (0.2), scaled x2 " << scaled(p, 1) << "\n";
   assert(close(idw(p, 1), expected, 1e-12));
-  assert(close(inv_r(p, 1), 0.16, 1e-12));
+  assert(close(inv_r(p, 1), expected_inv_r, 1e-12));
   assert(close(idw(Point_3(5, 5, 5), 1), 0.25, 1e-12));
   assert(close(idw(Point_3(1, 0, 0), 1), 0.2, 1e-12));
   assert(close(scaled(p, 1), 2. * expected, 1e-12));
   assert(idw.default_radius(1) == 0.25 && idw.smallest_surface_radius(1) == 0.1);
   assert(idw(p, 0) == 0. && idw(p, 7) == 0.); // no surface bubbles / no such region
 
+  // The field is continuous, also where weight points leave their range: along
+  // a line from inside the tetrahedron to far outside, sampled every 1e-4, no
+  // step changes the radius by more than a slope of 2 allows (cut-off weights
+  // jumped by up to 0.04 where a weight point left).
+  {
+    const BM::Surface_bubble_sizing_field<K> ungraded_field(tet, sb, BMP::size_gradation(0.));
+    double previous = ungraded_field(Point_3(0.2, 0.2, 0.14), 1), largest_step = 0.;
+    for(int k = 1; k <= 30000; ++k)
+    {
+      const double c = 0.2 + 1e-4 * double(k);
+      const double now = ungraded_field(Point_3(c, c, 0.7 * c), 1);
+      largest_step = (std::max)(largest_step, std::abs(now - previous));
+      previous = now;
+    }
+    std::cout << "largest change of the radius over 1e-4 along a line: " << largest_step << "\n";
+    assert(largest_step < 2. * 1e-4 * std::sqrt(2.49));
+    assert(close(previous, 0.25, 1e-12)); // far away: R0
+  }
+
   // Gradation. Radii 0.01, 10, 10, 10: R0 = 5.005,
-  // all four are weight points of p; inverse distance gives
-  // R = (0.01 / l_0 + 30 / l_1) / (1 / l_0 + 3 / l_1) = 5.5, but the radius may
-  // grow only 0.5 per unit of distance from bubble 0: 0.01 + 0.5 l_0 = 0.1832.
+  // all four are weight points of p; the tapered inverse distance gives about
+  // 5, but the radius may grow only 0.5 per unit of distance from bubble 0:
+  // 0.01 + 0.5 l_0 = 0.1832.
   sb[0].radius = 0.01;
   for(std::size_t i = 1; i < 4; ++i) sb[i].radius = 10.;
-  const double l0 = std::sqrt(0.12), l1 = std::sqrt(0.72);
-  const double interpolated = (0.01 / l0 + 30. / l1) / (1. / l0 + 3. / l1);
+  const double r0 = 0.5 * (0.01 + 10.), ta = taper(l0, 1.5 * (r0 + 0.01)), tb = taper(l1, 1.5 * (r0 + 10.));
+  const double wb = 1. / (3. * r0);
+  const double interpolated = (ta / l0 * 0.01 + 3. * tb / l1 * 10. + wb * r0) / (ta / l0 + 3. * tb / l1 + wb);
   const BM::Surface_bubble_sizing_field<K> graded(tet, sb);
   const BM::Surface_bubble_sizing_field<K> ungraded(tet, sb, BMP::size_gradation(0.));
   const BM::Surface_bubble_sizing_field<K> steep(tet, sb, BMP::size_gradation(2.));

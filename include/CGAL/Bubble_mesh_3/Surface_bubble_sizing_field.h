@@ -47,15 +47,18 @@ surface bubble `j` of `r` is a weight point of `p` when
 `l_j = |p - c_j| < f (R0 + r_j)` (`f` = `interaction_range_factor`, 1.5).
 With weight points `j = 1..n`:
 
-    R(p) = s_r * min( sum_j lambda_j r_j,  min_i (r_i + g l_i) ),
-    lambda_j = w_j / sum_k w_k,
+    R(p) = s_r * min( (sum_j w_j r_j + w_0 R0) / (sum_j w_j + w_0),  min_i (r_i + g l_i) ),
+    w_j = v_j (1 - (l_j / L_j)^2)^2,   L_j = f (R0 + r_j),
 
-with `w_j = 1 / l_j` (`Radius_weighting::INVERSE_DISTANCE`, default: the
-closer, the heavier) or `w_j = 1 / r_j` (`Radius_weighting::INVERSE_RADIUS`,
-the paper's printed formula). At a surface bubble's centre (`l_j = 0`) the
-inverse-distance rule gives that bubble's radius. Without weight point,
-`R(p) = s_r * R0`. `s_r` is entry `r` of `region_scale_factors` (1 when
-absent): below 1 asks for a denser mesh in region `r`, above 1 a coarser one,
+with `v_j = 1 / l_j` (`Radius_weighting::INVERSE_DISTANCE`, default: the
+closer, the heavier) or `v_j = 1 / r_j` (`Radius_weighting::INVERSE_RADIUS`,
+the paper's printed formula), and `w_0` the weight of a bubble of radius R0
+at the edge of its untapered range: `1 / (2 f R0)`, or `1 / R0`. At a surface
+bubble's centre (`l_j = 0`) the inverse-distance rule gives that bubble's
+radius. Without weight point, `R(p) = s_r * R0`. The taper and the weight
+point R0 are deviations from the paper's plain `lambda_j = v_j / sum_k v_k`:
+they make the field continuous (see `taper()` below). `s_r` is entry `r` of
+`region_scale_factors` (1 when absent): below 1 asks for a denser mesh in region `r`, above 1 a coarser one,
 without touching its surface. The second term, over all surface bubbles `i`
 of `r`, bounds the growth of the radius away from the surface by `g` per unit
 of distance (`g` = `size_gradation`, 0.5; 0 drops it, as in the paper): the
@@ -269,7 +272,8 @@ private:
     {
       const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, rd.centres[j])));
       graded = (std::min)(graded, rd.radii[j] + gradation_ * l);
-      if(!(l < range_factor_ * (rd.r0 + rd.radii[j]))) continue;
+      const double reach = range_factor_ * (rd.r0 + rd.radii[j]);
+      if(!(l < reach)) continue;
       double w = 1. / rd.radii[j];
       if(weighting_ == Radius_weighting::INVERSE_DISTANCE)
       {
@@ -277,11 +281,13 @@ private:
         if(l == 0.) { coincident_sum += rd.radii[j]; ++coincident; continue; }
         w = 1. / l;
       }
+      w *= taper(l / reach);
       weight_sum += w;
       weighted += w * rd.radii[j];
     }
     if(coincident > 0) return coincident_sum / double(coincident);
-    const double interpolated = weight_sum > 0. ? weighted / weight_sum : rd.r0;
+    const double w0 = background_weight(rd);
+    const double interpolated = weight_sum + w0 > 0. ? (weighted + w0 * rd.r0) / (weight_sum + w0) : rd.r0;
     if(!(gradation_ > 0.)) return interpolated;
     // Only bubbles closer than (interpolated - r_min) / g can lower the bound. When
     // that distance is well inside the search radius, they are all in `near`, and a
@@ -290,6 +296,24 @@ private:
     const double needed = (interpolated - rd.r_min + 1e-9 * interpolated) / gradation_;
     if(needed < 0.999 * range) return (std::min)(interpolated, graded);
     return (std::min)(interpolated, graded_bound(rd, p, interpolated));
+  }
+
+  // A weight point's weight fades to 0 at the edge of its range, and R0 is one
+  // more weight point everywhere, with the weight of a bubble of radius R0 at
+  // the edge of its untapered range: the field is then continuous. With cut-off
+  // weights and R0 only where no weight point is left, it jumped where the last
+  // one left the range, from the surface radius to R0 (twice it on modelA1
+  // re-meshed), and the bubbles either side of the jump could not pack: a
+  // small one among big ones has too few neighbours, a big one too many.
+  static double taper(double t)
+  {
+    const double u = 1. - t * t;
+    return u * u;
+  }
+  double background_weight(const Region_data& rd) const
+  {
+    const double edge = weighting_ == Radius_weighting::INVERSE_DISTANCE ? 2. * range_factor_ * rd.r0 : rd.r0;
+    return edge > 0. ? 1. / edge : 0.;
   }
 
   // min_j (r_j + g l_j) over the region's surface bubbles, or `bound` if that
