@@ -328,7 +328,7 @@ static void test_radius_rule()
   // The field is continuous, also where weight points leave their range: along
   // a line from inside the tetrahedron to far outside, sampled every 1e-4, no
   // step changes the radius by more than a slope of 2 allows (cut-off weights
-  // jumped by up to 0.04 where a weight point left).
+  // jumped by 0.109 on this line where a weight point left).
   {
     const BM::Surface_bubble_sizing_field<K> ungraded_field(tet, sb, BMP::size_gradation(0.));
     double previous = ungraded_field(Point_3(0.2, 0.2, 0.14), 1), largest_step = 0.;
@@ -345,8 +345,8 @@ static void test_radius_rule()
   }
 
   // Gradation. Radii 0.01, 10, 10, 10: R0 = 5.005,
-  // all four are weight points of p; the tapered inverse distance gives about
-  // 5, but the radius may grow only 0.5 per unit of distance from bubble 0:
+  // all four are weight points of p; the tapered inverse distance gives 5.51,
+  // but the radius may grow only 0.5 per unit of distance from bubble 0:
   // 0.01 + 0.5 l_0 = 0.1832.
   sb[0].radius = 0.01;
   for(std::size_t i = 1; i < 4; ++i) sb[i].radius = 10.;

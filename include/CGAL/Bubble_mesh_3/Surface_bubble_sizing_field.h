@@ -57,9 +57,9 @@ at the edge of its untapered range: `1 / (2 f R0)`, or `1 / R0`. At a surface
 bubble's centre (`l_j = 0`) the inverse-distance rule gives that bubble's
 radius. Without weight point, `R(p) = s_r * R0`. The taper and the weight
 point R0 are deviations from the paper's plain `lambda_j = v_j / sum_k v_k`:
-they make the field continuous (see `taper()` below). `s_r` is entry `r` of
-`region_scale_factors` (1 when absent): below 1 asks for a denser mesh in region `r`, above 1 a coarser one,
-without touching its surface. The second term, over all surface bubbles `i`
+they make the field continuous (see `taper()` below). `s_r` is entry `r`
+of `region_scale_factors` (1 when absent): below 1 asks for a denser mesh
+in region `r`, above 1 a coarser one, without touching its surface. The second term, over all surface bubbles `i`
 of `r`, bounds the growth of the radius away from the surface by `g` per unit
 of distance (`g` = `size_gradation`, 0.5; 0 drops it, as in the paper): the
 few huge bubbles at the corners of coarse triangles (a box's faces) would
