@@ -18,6 +18,7 @@
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
 #include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
+#include <CGAL/Bubble_mesh_3/retriangulate_planar_patches.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Side_of_triangle_mesh.h>
@@ -54,7 +55,7 @@ namespace {
 const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin LIST]\n"
   "       bench_relaxation alpha [MODEL ...] [--threads N] [--skin S] [--rounds]\n"
-  "                            [--remesh-surfaces] [--repulsive]\n"
+  "                            [--remesh-surfaces | --planar] [--repulsive]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -79,6 +80,8 @@ const char* usage =
   "            population round (region, changes, population, steps, last move).\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
+  "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
+  "            defaults), as bubble_mesh_3 does by default with the surfaces kept.\n"
   "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n"
   "            A MODEL written layered:E is the bundled model made at longest surface\n"
   "            edge E (make_layered_model; 80 is the bundled size). --skin as above.\n";
@@ -243,7 +246,7 @@ double quantile(const std::vector<double>& sorted, double q)
 }
 
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, bool repulsive)
+                bool remesh, bool planar, bool repulsive)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -275,6 +278,15 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
       name = "layered model, edge length " + path.substr(8);
     }
     else if(!read_model(path, m)) { status = EXIT_FAILURE; continue; }
+    if(planar && !remesh)
+    {
+      Model retriangulated;
+      const BM::Planar_retriangulation_report pr = BM::retriangulate_planar_patches(m, retriangulated);
+      std::cout << name << ": planar pieces re-triangulated, " << pr.number_of_points_added << " new points, "
+                << m.number_of_triangles() << " -> " << retriangulated.number_of_triangles() << " triangles" << std::endl;
+      m = std::move(retriangulated);
+      name += " (planar)";
+    }
     if(remesh)
     {
       Model remeshed;
@@ -376,7 +388,7 @@ int main(int argc, char** argv)
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
-  bool print_rounds = false, remesh = false, repulsive = false;
+  bool print_rounds = false, remesh = false, planar = false, repulsive = false;
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -394,6 +406,7 @@ int main(int argc, char** argv)
     }
     else if(a == "--rounds" && alpha) print_rounds = true;
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
+    else if(a == "--planar" && alpha) planar = true;
     else if(a == "--repulsive" && alpha) repulsive = true;
     else if(a == "--threads" && has_value)
     {
@@ -420,5 +433,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, repulsive);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive);
 }

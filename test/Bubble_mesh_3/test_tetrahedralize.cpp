@@ -49,6 +49,7 @@
 #include <limits>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -789,6 +790,27 @@ void test_planar_refinement()
     assert(q.x() == 0. || q.x() == 1. || q.y() == 0. || q.y() == 1. || q.z() == 0. || q.z() == height);
   }
   for(std::size_t p : {bottom, top, walls}) assert_same_surface(m, g, p);
+  // the top's two huge triangles are filled to the model's median input edge
+  // (graded from the points on its border): no bare wall left
+  std::set<std::pair<std::size_t, std::size_t> > edges;
+  for(const auto& t : m.triangles())
+    for(int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  std::vector<double> lengths;
+  for(const auto& e : edges) lengths.push_back(std::sqrt(CGAL::squared_distance(m.point(e.first), m.point(e.second))));
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  const double median = lengths[lengths.size() / 2];
+  auto longest_top_edge = [&](const Model& x) {
+    double longest = 0.;
+    for(std::size_t t = 0; t < x.number_of_triangles(); ++t)
+      if(x.patch_of_triangle(t) == top)
+        for(int k = 0; k < 3; ++k)
+          longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(x.point(x.triangle(t)[k]),
+                                                                          x.point(x.triangle(t)[(k + 1) % 3]))));
+    return longest;
+  };
+  std::cout << "  top: longest edge " << longest_top_edge(m) << " -> " << longest_top_edge(g) << ", median input edge "
+            << median << std::endl;
+  assert(longest_top_edge(m) > 2. * median && longest_top_edge(g) <= 1.2 * median);
   const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 0.04, 12);
   C3T3 c3t3;
   mesh_and_check("thin box with a flat top, planar pieces refined", g, inside, c3t3);

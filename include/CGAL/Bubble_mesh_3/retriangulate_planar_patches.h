@@ -25,7 +25,8 @@ enum planar_angle_bound_t { planar_angle_bound };
 namespace parameters {
 /// \ingroup PkgBubbleMesh3Ref
 /// smallest triangle angle (degrees) `retriangulate_planar_patches()` aims at
-/// on planar pieces that lie in an axis plane, with new points; 0: no new points
+/// on planar pieces that lie in an axis plane, with new points (which also
+/// bring their edges to the median input edge); 0: no new points
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, planar_angle_bound)
 } // namespace parameters
 
@@ -42,7 +43,12 @@ inside a piece change, and each piece covers the same polygon as before.
 - A piece in an axis plane (x, y or z constant: the walls, top and bottom of
   most models), when `planar_angle_bound` is positive, is also refined:
   circumcentres of its triangles with an angle under the bound are added as
-  new points, exactly on the plane, and an edge it shares only with other
+  new points, exactly on the plane, and so are circumcentres of triangles
+  wider than the size wanted there: the spacing of the points on the
+  piece's border and on the curves inside it, growing by half the distance
+  from them, at most the median input edge of the model (a wall or a bottom
+  given as two huge triangles would stay bare: the bubbles beside it would
+  have no neighbour on that side). An edge it shares only with other
   such pieces is split at its midpoint (exactly on the edge) where a
   circumcentre would come too close to it. Edges shared with any other
   surface (a horizon's trace on a wall, a fault) are never split, so no other

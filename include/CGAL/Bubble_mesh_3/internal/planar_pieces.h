@@ -455,7 +455,28 @@ private:
     for(const auto& e : edge_ends_)
       shortest = (std::min)(shortest, std::sqrt(CGAL::to_double(CGAL::squared_distance(in_.point(e[0]), in_.point(e[1])))));
     min_split_length_ = shortest;
-    budget_ = 2 * np_ + 1000;
+    std::vector<double> lengths;
+    lengths.reserve(edge_ends_.size());
+    for(const auto& e : edge_ends_)
+      lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(in_.point(e[0]), in_.point(e[1])))));
+    if(!lengths.empty())
+    {
+      std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+      size_cap_ = lengths[lengths.size() / 2];
+    }
+    // the angle rule's points, and those of the size rule: about one per
+    // 0.43 cap^2 of axis-plane area, graded towards the finer borders
+    double axis_area = 0.;
+    for(std::size_t p = 0; p < pieces_.size(); ++p)
+      if(frames_[p].axis >= 0)
+        for(std::size_t t : pieces_[p])
+        {
+          const Triangle& tri = in_.triangle(t);
+          axis_area += 0.5 * std::sqrt(CGAL::to_double(
+                               CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0])).squared_length()));
+        }
+    const double size_points = std::isfinite(size_cap_) && size_cap_ > 0. ? 2. * axis_area / (0.43 * size_cap_ * size_cap_) : 0.;
+    budget_ = 2 * np_ + 1000 + std::size_t((std::min)(size_points, 1e7));
     for(int round = 0; round < 100; ++round)
     {
       bool split = false;
@@ -481,6 +502,7 @@ private:
       CDT cdt;
       std::vector<Subsegment> subs;
       if(!build(p, cdt, subs)) return -1;
+      const std::vector<Size_source> sources = size_sources(f, subs);
       std::set<std::array<std::size_t, 3> > given_up;
       bool rebuild = false;
       // bad faces a batch at a time, largest circumcircle first (a scan per
@@ -508,8 +530,11 @@ private:
             // the smallest angle is opposite the shortest side: sin = 2A / (product of the other two)
             const double shortest = (std::min)({la, lb, lc});
             const double others = shortest == la ? lb * lc : shortest == lb ? la * lc : la * lb;
-            if(twice_area >= sin_bound_ * std::sqrt(others)) continue;
-            Bad bad{CGAL::to_double(CGAL::squared_radius(a, b, c)),
+            const double r2 = CGAL::to_double(CGAL::squared_radius(a, b, c));
+            if(twice_area >= sin_bound_ * std::sqrt(others) &&
+               !(3. * r2 > CGAL::square(target_size(sources, CGAL::circumcenter(a, b, c)))))
+              continue;
+            Bad bad{r2,
                     {{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}},
                     {{fh->vertex(0), fh->vertex(1), fh->vertex(2)}}};
             std::sort(bad.key.begin(), bad.key.end());
@@ -563,6 +588,51 @@ private:
     }
   }
 
+  // The edge length wanted on a piece: the spacing of the points on its
+  // boundary and on the curves inside it (a quarter of the median input edge
+  // at least), growing by half the distance from them, and at most the
+  // median input edge. Without it a wall or a bottom
+  // given as a few huge triangles stays bare: the bubbles beside it have no
+  // neighbour on that side, and its tetrahedra reach across the whole model.
+  struct Size_source { double x, y, size; };
+
+  std::vector<Size_source> size_sources(const Frame& f, const std::vector<Subsegment>& subs) const
+  {
+    std::map<std::size_t, std::pair<double, int> > spacing; // point -> sum of its subsegments' lengths, count
+    for(const Subsegment& s : subs)
+    {
+      const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(point(s.u), point(s.v))));
+      for(std::size_t id : {s.u, s.v})
+      {
+        auto& acc = spacing[id];
+        acc.first += l;
+        ++acc.second;
+      }
+    }
+    std::vector<Size_source> out;
+    out.reserve(spacing.size());
+    for(const auto& sp : spacing)
+    {
+      // a quarter of the cap at least: the angle rule already grades the
+      // triangles down to tiny input edges, rings of points for size too would
+      // only multiply the points there
+      const double h = (std::max)(sp.second.first / sp.second.second, 0.25 * size_cap_);
+      if(!(h < size_cap_)) continue; // bounds nothing under the cap
+      const Point_2 q = to_2d(f, point(sp.first));
+      out.push_back(Size_source{CGAL::to_double(q.x()), CGAL::to_double(q.y()), h});
+    }
+    return out;
+  }
+
+  double target_size(const std::vector<Size_source>& sources, const Point_2& c) const
+  {
+    const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y());
+    double h = size_cap_;
+    for(const Size_source& s : sources)
+      h = (std::min)(h, s.size + 0.5 * std::sqrt(CGAL::square(cx - s.x) + CGAL::square(cy - s.y)));
+    return h;
+  }
+
   // splits subsegment `s` at its midpoint if that is exactly on the edge; false if not
   bool split(const Subsegment& s)
   {
@@ -586,6 +656,7 @@ private:
   const double sin_bound_;
   const bool refine_;
   double min_split_length_ = 0.;
+  double size_cap_ = std::numeric_limits<double>::infinity(); // the median input edge
   std::size_t budget_ = 0;
 
   std::vector<std::array<std::size_t, 2> > edge_ends_;   // model point ids, first < second
