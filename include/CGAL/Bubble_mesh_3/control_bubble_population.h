@@ -110,7 +110,7 @@ struct Dynamics_settings
   double time_step = 0.2;
   double tolerance = 1e-3;
   double round_tolerance = 1e-2;
-  std::size_t step_budget = 2000;
+  std::size_t step_budget = 500;
   std::size_t round_step_budget = 300;
   std::size_t radius_update_steps = 300;
   double min_overlap = 10.;
@@ -138,7 +138,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.time_step = choose_parameter(get_parameter(np, internal_np::time_step), 0.2 * std::sqrt(s.mass / stiffness));
   s.tolerance = choose_parameter(get_parameter(np, internal_np::displacement_tolerance), 1e-3);
   s.round_tolerance = choose_parameter(get_parameter(np, internal_np::round_displacement_tolerance), 1e-2);
-  s.step_budget = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), std::size_t(2000));
+  s.step_budget = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), std::size_t(500));
   s.round_step_budget = choose_parameter(get_parameter(np, internal_np::number_of_round_relaxation_steps), std::size_t(300));
   s.radius_update_steps = choose_parameter(get_parameter(np, internal_np::number_of_radius_update_steps), std::size_t(300));
   s.min_overlap = choose_parameter(get_parameter(np, internal_np::min_overlap_ratio), 10.);

@@ -1105,8 +1105,10 @@ the end.
     \cgalParamType{`double`} \cgalParamDefault{\f$ 0.2\sqrt{m/k} \f$}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_relaxation_steps}
-    \cgalParamDescription{step budget of a relaxation to `displacement_tolerance`}
-    \cgalParamType{`std::size_t`} \cgalParamDefault{2000}
+    \cgalParamDescription{step budget of a relaxation to `displacement_tolerance`; a region that has not
+      settled in 500 steps (bubbles against needle triangles) did not settle in 2000 either, and its
+      overlap ratios were the same}
+    \cgalParamType{`std::size_t`} \cgalParamDefault{500}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_round_relaxation_steps}
     \cgalParamDescription{step budget of a relaxation to `round_displacement_tolerance` (between population
