@@ -451,14 +451,12 @@ private:
   // more; false if a piece's triangulation failed its check
   bool refine_all()
   {
-    double shortest = std::numeric_limits<double>::infinity();
-    for(const auto& e : edge_ends_)
-      shortest = (std::min)(shortest, std::sqrt(CGAL::to_double(CGAL::squared_distance(in_.point(e[0]), in_.point(e[1])))));
-    min_split_length_ = shortest;
     std::vector<double> lengths;
     lengths.reserve(edge_ends_.size());
     for(const auto& e : edge_ends_)
       lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(in_.point(e[0]), in_.point(e[1])))));
+    min_split_length_ = lengths.empty() ? std::numeric_limits<double>::infinity()
+                                        : *std::min_element(lengths.begin(), lengths.end());
     if(!lengths.empty())
     {
       std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
@@ -591,9 +589,9 @@ private:
   // The edge length wanted on a piece: the spacing of the points on its
   // boundary and on the curves inside it (a quarter of the median input edge
   // at least), growing by half the distance from them, and at most the
-  // median input edge. Without it a wall or a bottom
-  // given as a few huge triangles stays bare: the bubbles beside it have no
-  // neighbour on that side, and its tetrahedra reach across the whole model.
+  // median input edge. Without it a wall or a bottom given as a few huge
+  // triangles stays bare: the bubbles beside it have no neighbour on that
+  // side, and its tetrahedra reach across the whole model.
   struct Size_source { double x, y, size; };
 
   std::vector<Size_source> size_sources(const Frame& f, const std::vector<Subsegment>& subs) const
