@@ -53,18 +53,20 @@ With weight points `j = 1..n`:
 with `v_j = 1 / l_j` (`Radius_weighting::INVERSE_DISTANCE`, default: the
 closer, the heavier) or `v_j = 1 / r_j` (`Radius_weighting::INVERSE_RADIUS`,
 the paper's printed formula), and `w_0` the weight of a bubble of radius R0
-at the edge of its untapered range: `1 / (2 f R0)`, or `1 / R0`. At a surface
-bubble's centre (`l_j = 0`) the inverse-distance rule gives that bubble's
-radius. Without weight point, `R(p) = s_r * R0`. The taper and the weight
-point R0 are deviations from the paper's plain `lambda_j = v_j / sum_k v_k`:
-they make the field continuous (see `taper()` below). `s_r` is entry `r`
-of `region_scale_factors` (1 when absent): below 1 asks for a denser mesh
-in region `r`, above 1 a coarser one, without touching its surface. The second term, over all surface bubbles `i`
-of `r`, bounds the growth of the radius away from the surface by `g` per unit
-of distance (`g` = `size_gradation`, 0.5; 0 drops it, as in the paper): the
-few huge bubbles at the corners of coarse triangles (a box's faces) would
+at the edge of its untapered range: `1 / (2 f R0)`, or `1 / R0`. At a
+surface bubble's centre (`l_j = 0`) the inverse-distance rule gives that
+bubble's radius. Without weight point, `R(p) = s_r * R0`. The taper and the
+weight point R0 are deviations from the paper's plain
+`lambda_j = v_j / sum_k v_k`: they make the field continuous (see `taper()`
+below). `s_r` is entry `r` of `region_scale_factors` (1 when absent): below
+1 asks for a denser mesh in region `r`, above 1 a coarser one, without
+touching its surface. The second term, over all surface bubbles `i` of `r`,
+bounds the growth of the radius away from the surface by `g` per unit of
+distance (`g` = `size_gradation`, 0.5; 0 drops it, as in the paper): the few
+huge bubbles at the corners of coarse triangles (a box's faces) would
 otherwise be interpolated over the whole fine mesh beside them. It and the
-quantiles are deviations from the paper, measured on modelA1 (bench/README.md).
+quantiles are deviations from the paper, measured on modelA1
+(bench/README.md).
 
 Only surface bubbles whose `surface_point` is a model point are used. Weight
 points are found in a uniform grid per region (cells of half the search
