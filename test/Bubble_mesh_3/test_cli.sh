@@ -93,6 +93,40 @@ assert float(m.group(1)) < 1. and float(m.group(2)) >= 25. and int(m.group(3)) =
 run "$tmp/cube.obj" --remesh-surfaces --size 25% -o "$tmp/r1.mesh" --threads 1 -q
 check "--remesh-surfaces: same mesh with 1 and 2 threads" cmp -s "$tmp/r1.mesh" "$tmp/r.mesh"
 
+# --layer-elements: a slab 1 x 1 x 0.1 re-meshed at a size of 25 % of its diagonal (0.35);
+# the thickness rule asks for N edges across the 0.1 between top and bottom, so the
+# re-meshed surfaces must get finer with N: 0 (rule off) < 1 < 2
+python3 - "$tmp/slab.obj" <<'PY'
+import sys
+h=0.1
+v=[(x,y,z) for z in (0,h) for y in (0,1) for x in (0,1)]
+i=lambda x,y,z: v.index((x,y,z))+1
+q=[[(0,0,0),(0,1,0),(1,1,0),(1,0,0)],[(0,0,h),(1,0,h),(1,1,h),(0,1,h)],
+   [(0,0,0),(1,0,0),(1,0,h),(0,0,h)],[(1,0,0),(1,1,0),(1,1,h),(1,0,h)],
+   [(1,1,0),(0,1,0),(0,1,h),(1,1,h)],[(0,1,0),(0,0,0),(0,0,h),(0,1,h)]]
+with open(sys.argv[1],'w') as o:
+    o.write('o Slab\n')
+    for p in v: o.write('v %g %g %g\n'%p)
+    for a,b,c,d in q: o.write('f %d %d %d\nf %d %d %d\n'%(i(*a),i(*b),i(*c),i(*a),i(*c),i(*d)))
+PY
+slab_triangles() { echo "$out" | sed -n 's/^surface remeshing: 12 -> \([0-9]*\) triangles.*/\1/p'; }
+run "$tmp/slab.obj" --remesh-surfaces --size 25% --layer-elements 0 --no-sliver-removal --threads 2
+check "--layer-elements 0 exits 0" test "$rc" -eq 0
+n0="$(slab_triangles)"
+run "$tmp/slab.obj" --remesh-surfaces --size 25% --layer-elements 1 --no-sliver-removal --threads 2
+n1="$(slab_triangles)"
+run "$tmp/slab.obj" --remesh-surfaces --size 25% --no-sliver-removal --threads 2
+n2="$(slab_triangles)"
+echo "  slab re-meshed triangles with 0 / 1 / 2 (default) edges across: $n0 / $n1 / $n2"
+check "--layer-elements: finer with more edges across a thin layer" \
+  test -n "$n0" -a -n "$n1" -a -n "$n2" -a "${n0:-0}" -lt "${n1:-0}" -a "${n1:-0}" -lt "${n2:-0}"
+run "$tmp/slab.obj" --layer-elements 1
+check "--layer-elements without --remesh-surfaces exits 2" test "$rc" -eq 2
+check "--layer-elements without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
+run "$tmp/slab.obj" --remesh-surfaces --layer-elements -1
+check "--layer-elements -1 exits 2" test "$rc" -eq 2
+check "--help lists --layer-elements" bash -c "'$exe' --help | grep -q -- --layer-elements"
+
 # by default each planar face is re-triangulated first: the bottom's needle goes, the cube stays the cube
 run "$tmp/cube.obj" -o "$tmp/p.mesh" --quality-json "$tmp/qp.json" --threads 2
 check "planar pieces: exits 0" test "$rc" -eq 0
