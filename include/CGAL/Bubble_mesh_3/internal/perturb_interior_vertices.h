@@ -76,14 +76,31 @@ inline double smallest_dihedral_angle(const Vec3& p0, const Vec3& p1, const Vec3
     // four normals does not change an angle
     if(k % 2 == 1) n[k] = {{-n[k][0], -n[k][1], -n[k][2]}};
   }
-  double smallest = 180.;
-  for(int i = 0; i < 4; ++i)
-    for(int j = i + 1; j < 4; ++j)
+  // the angle of pair k is atan2(s[k], c[k]), s[k] >= 0
+  double s[6], c[6];
+  bool degenerate = false;
+  for(int i = 0, k = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j, ++k)
     {
-      const Vec3 c = cross(n[i], n[j]);
-      const double a = std::atan2(std::sqrt(dot(c, c)), -dot(n[i], n[j])) * 180. / CGAL_PI;
-      smallest = (std::min)(smallest, a);
+      const Vec3 x = cross(n[i], n[j]);
+      s[k] = std::sqrt(dot(x, x));
+      c[k] = -dot(n[i], n[j]);
+      degenerate = degenerate || !(s[k] > 0.);
     }
+  // The sliver steps ask this for every cell they touch, and atan2 was their
+  // largest cost: with every s[k] > 0 the angles lie in (0, 180), where a
+  // smaller angle has a larger cotangent c/s, so one atan2 is enough. A flat
+  // or degenerate cell (some s[k] = 0) takes all six, as the signs of zeros
+  // decide there.
+  int best = 0;
+  if(!degenerate)
+  {
+    for(int k = 1; k < 6; ++k)
+      if(c[k] * s[best] > c[best] * s[k]) best = k;
+    return std::atan2(s[best], c[best]) * 180. / CGAL_PI;
+  }
+  double smallest = 180.;
+  for(int k = 0; k < 6; ++k) smallest = (std::min)(smallest, std::atan2(s[k], c[k]) * 180. / CGAL_PI);
   return smallest;
 }
 
