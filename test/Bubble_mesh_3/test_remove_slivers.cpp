@@ -742,6 +742,24 @@ void test_cell_angle()
   std::cout << "smallest dihedral angle of a nearly flat cell, largest over its 24 vertex orders: " << largest << std::endl;
   assert(largest < 1e-3);
 
+  // the one atan2 of the chosen pair is the smallest of the report's six angles:
+  // random cells, every other one squashed along a random axis into a sliver
+  CGAL::Random random(11);
+  double worst_difference = 0.;
+  for(int t = 0; t < 20000; ++t)
+  {
+    BM::internal::Vec3 p[4];
+    for(auto& q : p) q = {{random.get_double(-1., 1.), random.get_double(-1., 1.), random.get_double(-1., 1.)}};
+    if(t % 2 == 1)
+      for(auto& q : p) q[t % 3] *= std::pow(10., -random.get_double(1., 6.));
+    const double mine = smallest_dihedral_angle(p[0], p[1], p[2], p[3]);
+    const double report = BM::tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_angle;
+    worst_difference = (std::max)(worst_difference, std::abs(mine - report));
+  }
+  std::cout << "smallest dihedral angle against the quality report's, 20000 random cells: largest difference "
+            << worst_difference << " degrees" << std::endl;
+  assert(worst_difference < 1e-9);
+
   // the smoothing's aspect ratio is the quality report's
   using BM::internal::aspect_ratio;
   assert(std::abs(aspect_ratio(regular[0], regular[1], regular[2], regular[3]) - std::sqrt(1.5)) < 1e-12);
