@@ -270,8 +270,8 @@ private:
       // lower the graded bound below the interpolated radius where it is read from
       // the visited ones (see below). The grid's cells and their items come in a fixed
       // order, so the sums do too (same input, same bits), with no list to gather and
-      // sort: this query runs for every bubble at every step and was a fifth of a
-      // real model's meshing time when it sorted its list.
+      // sort: this query runs for every bubble at every step, and sorting its list was
+      // 13 % of the CPU samples of a whole modelA5 run.
       const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
       const double r2 = range * range * (1. + 1e-9);
       rd.grid.for_each_row_in_ball_packed(x, y, z, range, [&](const std::uint32_t*, const double* q,
