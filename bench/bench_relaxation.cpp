@@ -19,6 +19,9 @@
 #include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
 #include <CGAL/Bubble_mesh_3/retriangulate_planar_patches.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Side_of_triangle_mesh.h>
@@ -55,7 +58,7 @@ namespace {
 const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin LIST]\n"
   "       bench_relaxation alpha [MODEL ...] [--threads N] [--skin S] [--rounds]\n"
-  "                            [--remesh-surfaces | --planar] [--repulsive]\n"
+  "                            [--remesh-surfaces | --planar] [--repulsive] [--by-wall]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -83,6 +86,9 @@ const char* usage =
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
   "            defaults), as bubble_mesh_3 does by default with the surfaces kept.\n"
   "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n"
+  "            --by-wall also splits the interior bubbles by distance to the nearest\n"
+  "            input triangle (in their radius) and, within 3 radii, by that triangle's\n"
+  "            longest edge (in their radius): where the ratios outside [10,14] sit.\n"
   "            A MODEL written layered:E is the bundled model made at longest surface\n"
   "            edge E (make_layered_model; 80 is the bundled size). --skin as above.\n";
 
@@ -245,8 +251,50 @@ double quantile(const std::vector<double>& sorted, double q)
   return sorted[std::size_t(q * double(sorted.size() - 1) + 0.5)];
 }
 
+// The interior bubbles by distance d from the nearest input triangle (in their
+// radius) and, for d < 3, by that triangle's longest edge L (in their radius),
+// each class with its overlap ratios against [10, 14]: a bubble beside an
+// input triangle many radii wide faces a wall with no surface bubble on it.
+void print_wall_classes(const Model& m, const std::vector<Bubble>& interior, const std::vector<double>& alpha)
+{
+  typedef std::vector<K::Triangle_3>::const_iterator Iterator;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Iterator> > > Tree;
+  std::vector<K::Triangle_3> triangles;
+  for(const Model::Triangle& t : m.triangles()) triangles.emplace_back(m.point(t[0]), m.point(t[1]), m.point(t[2]));
+  if(triangles.empty()) return;
+  Tree tree(triangles.cbegin(), triangles.cend());
+  tree.accelerate_distance_queries();
+  const char* names[8] = {"d < 1", "1 <= d < 2", "2 <= d < 3", "3 <= d < 5", "d >= 5",
+                          "d < 3, L < 3", "d < 3, 3 <= L < 6", "d < 3, L >= 6"};
+  std::size_t count[8][3] = {};
+  for(std::size_t i = 0; i < interior.size(); ++i)
+  {
+    const Bubble& b = interior[i];
+    const auto hit = tree.closest_point_and_primitive(b.center);
+    const double d = std::sqrt(CGAL::squared_distance(b.center, hit.first)) / b.radius;
+    const K::Triangle_3& t = *hit.second;
+    double longest = 0.;
+    for(int k = 0; k < 3; ++k) longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(t[k], t[(k + 1) % 3])));
+    longest /= b.radius;
+    const int side = alpha[i] < 10. ? 0 : alpha[i] > 14. ? 2 : 1;
+    ++count[d < 1. ? 0 : d < 2. ? 1 : d < 3. ? 2 : d < 5. ? 3 : 4][side];
+    if(d < 3.) ++count[longest < 3. ? 5 : longest < 6. ? 6 : 7][side];
+  }
+  std::ostringstream out; // (its own stream: the caller's number format stays as it is)
+  out << "  by distance d to the nearest input triangle and its longest edge L, both over the bubble's radius:\n"
+      << "  | class | bubbles | <10 | [10,14] | >14 | share in [10,14] |\n  |---|---|---|---|---|---|\n";
+  for(int c = 0; c < 8; ++c)
+  {
+    const std::size_t n = count[c][0] + count[c][1] + count[c][2];
+    out << "  | " << names[c] << " | " << n << " | " << count[c][0] << " | " << count[c][1] << " | " << count[c][2]
+        << " | " << std::fixed << std::setprecision(1) << (n > 0 ? 100. * double(count[c][1]) / double(n) : 0.)
+        << " % |\n";
+  }
+  std::cout << out.str() << std::flush;
+}
+
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, bool planar, bool repulsive)
+                bool remesh, bool planar, bool repulsive, bool by_wall)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -315,6 +363,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     for(const Bubble& b : interior)
       if(!sides.inside(b)) ++outside;
     std::vector<double> alpha = BM::overlap_ratios(m, surface, interior);
+    const std::vector<double> alpha_of_bubble = alpha;
     std::sort(alpha.begin(), alpha.end());
     std::size_t rounds = 0, converged = 0;
     for(const BM::Region_relaxation_report& r : rep.regions) { rounds += r.rounds; converged += r.converged; }
@@ -340,6 +389,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
                 << (r.population_settled ? "settled" : r.stopped_cycling ? "cycle guard" : "round budget")
                 << ", <10/in/>14: " << r.below << "/" << r.inside << "/" << r.above << ", " << r.seconds << " s"
                 << std::endl;
+    if(by_wall) print_wall_classes(m, interior, alpha_of_bubble);
     table << std::fixed << std::setprecision(2) << "| " << name << " | " << interior.size() << " | " << outside
           << " | " << rep.seconds << " | " << cpu << " | " << rep.steps << " | " << rounds;
     for(double q : {0., 0.01, 0.05, 0.25, 0.5, 0.75, 0.95, 0.99, 1.}) table << " | " << quantile(alpha, q);
@@ -388,7 +438,7 @@ int main(int argc, char** argv)
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
-  bool print_rounds = false, remesh = false, planar = false, repulsive = false;
+  bool print_rounds = false, remesh = false, planar = false, repulsive = false, by_wall = false;
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -408,6 +458,7 @@ int main(int argc, char** argv)
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
     else if(a == "--planar" && alpha) planar = true;
     else if(a == "--repulsive" && alpha) repulsive = true;
+    else if(a == "--by-wall" && alpha) by_wall = true;
     else if(a == "--threads" && has_value)
     {
       threads.clear();
@@ -433,5 +484,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive, by_wall);
 }
