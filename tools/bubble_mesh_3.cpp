@@ -12,6 +12,7 @@
 #include <CGAL/Bubble_mesh_3/IO/write_mesh.h>
 #include <CGAL/Bubble_mesh_3/IO/write_quality_report.h>
 #include <CGAL/Bubble_mesh_3/IO/write_svg_histograms.h>
+#include <CGAL/Bubble_mesh_3/Remeshing_sizing_field.h>
 #include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h>
 #include <CGAL/make_bubble_mesh_3.h>
@@ -129,8 +130,8 @@ struct Options
   double planar_angle_bound = 10.;
   double size = 0.;          // absolute target edge length (0: not given)
   double relative_size = 0.; // fraction of the bounding-box diagonal (0: not given)
-  // edges across a thin layer: Remeshing_sizing_field's elements_across_thickness and its default
-  double layer_elements = 2.;
+  // edges across a thin layer: Remeshing_sizing_field's elements_across_thickness
+  double layer_elements = BM::Remeshing_sizing_field<K>::default_elements_across_thickness;
   bool layer_elements_given = false;
 };
 

@@ -80,6 +80,9 @@ public:
   typedef typename GeomTraits::Point_3 Point_3;     ///< point type
   typedef typename GeomTraits::Vector_3 Vector_3;   ///< vector type
 
+  /// default of the named parameter `elements_across_thickness`
+  static constexpr double default_elements_across_thickness = 2.;
+
 private:
   typedef typename GeomTraits::Triangle_3 Triangle_3;
   typedef typename GeomTraits::Segment_3 Segment_3;
@@ -177,7 +180,8 @@ public:
     const double min_patch_size =
       patch_size_.empty() ? size : *std::min_element(patch_size_.begin(), patch_size_.end());
 
-    elements_across_ = choose_parameter(get_parameter(np, internal_np::elements_across_thickness), 2.);
+    elements_across_ = choose_parameter(get_parameter(np, internal_np::elements_across_thickness),
+                                        default_elements_across_thickness);
     minimum_size_ = choose_parameter(get_parameter(np, internal_np::minimum_edge_length), 0.1 * min_patch_size);
     grading_ = choose_parameter(get_parameter(np, internal_np::size_grading), 1.5);
     CGAL_precondition_msg(grading_ > 1., "size_grading must be above 1");

@@ -131,28 +131,28 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  Dynamics_settings s;
-  s.mass = choose_parameter(get_parameter(np, internal_np::mass), 1.);
+  Dynamics_settings s; // its members hold the defaults
+  s.mass = choose_parameter(get_parameter(np, internal_np::mass), s.mass);
   CGAL_precondition(s.mass > 0. && stiffness > 0.);
   s.damping = choose_parameter(get_parameter(np, internal_np::damping), 2. * std::sqrt(s.mass * stiffness));
   s.time_step = choose_parameter(get_parameter(np, internal_np::time_step), 0.2 * std::sqrt(s.mass / stiffness));
-  s.tolerance = choose_parameter(get_parameter(np, internal_np::displacement_tolerance), 1e-3);
-  s.round_tolerance = choose_parameter(get_parameter(np, internal_np::round_displacement_tolerance), 1e-2);
-  s.step_budget = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), std::size_t(500));
-  s.round_step_budget = choose_parameter(get_parameter(np, internal_np::number_of_round_relaxation_steps), std::size_t(300));
-  s.radius_update_steps = choose_parameter(get_parameter(np, internal_np::number_of_radius_update_steps), std::size_t(300));
-  s.min_overlap = choose_parameter(get_parameter(np, internal_np::min_overlap_ratio), 10.);
-  s.max_overlap = choose_parameter(get_parameter(np, internal_np::max_overlap_ratio), 14.);
-  s.population_rounds = choose_parameter(get_parameter(np, internal_np::number_of_population_rounds), std::size_t(12));
-  s.population_tolerance = choose_parameter(get_parameter(np, internal_np::population_tolerance), 0.002);
-  s.insertion_clearance = choose_parameter(get_parameter(np, internal_np::insertion_clearance), 0.7);
-  s.skin = choose_parameter(get_parameter(np, internal_np::neighbor_skin), 0.25);
-  s.max_step = choose_parameter(get_parameter(np, internal_np::max_step_ratio), 0.125);
-  s.radius_update = choose_parameter(get_parameter(np, internal_np::radius_update_ratio), 0.1);
-  s.threads = choose_parameter(get_parameter(np, internal_np::dynamics_threads), std::size_t(0));
-  s.confinement.ball_margin = choose_parameter(get_parameter(np, internal_np::diametral_ball_margin), 0.02);
-  s.confinement.max_ball_ratio = choose_parameter(get_parameter(np, internal_np::max_protected_ball_ratio), 3.);
-  s.confinement.offset_ratio = choose_parameter(get_parameter(np, internal_np::surface_offset_ratio), 0.5);
+  s.tolerance = choose_parameter(get_parameter(np, internal_np::displacement_tolerance), s.tolerance);
+  s.round_tolerance = choose_parameter(get_parameter(np, internal_np::round_displacement_tolerance), s.round_tolerance);
+  s.step_budget = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), s.step_budget);
+  s.round_step_budget = choose_parameter(get_parameter(np, internal_np::number_of_round_relaxation_steps), s.round_step_budget);
+  s.radius_update_steps = choose_parameter(get_parameter(np, internal_np::number_of_radius_update_steps), s.radius_update_steps);
+  s.min_overlap = choose_parameter(get_parameter(np, internal_np::min_overlap_ratio), s.min_overlap);
+  s.max_overlap = choose_parameter(get_parameter(np, internal_np::max_overlap_ratio), s.max_overlap);
+  s.population_rounds = choose_parameter(get_parameter(np, internal_np::number_of_population_rounds), s.population_rounds);
+  s.population_tolerance = choose_parameter(get_parameter(np, internal_np::population_tolerance), s.population_tolerance);
+  s.insertion_clearance = choose_parameter(get_parameter(np, internal_np::insertion_clearance), s.insertion_clearance);
+  s.skin = choose_parameter(get_parameter(np, internal_np::neighbor_skin), s.skin);
+  s.max_step = choose_parameter(get_parameter(np, internal_np::max_step_ratio), s.max_step);
+  s.radius_update = choose_parameter(get_parameter(np, internal_np::radius_update_ratio), s.radius_update);
+  s.threads = choose_parameter(get_parameter(np, internal_np::dynamics_threads), s.threads);
+  s.confinement.ball_margin = choose_parameter(get_parameter(np, internal_np::diametral_ball_margin), s.confinement.ball_margin);
+  s.confinement.max_ball_ratio = choose_parameter(get_parameter(np, internal_np::max_protected_ball_ratio), s.confinement.max_ball_ratio);
+  s.confinement.offset_ratio = choose_parameter(get_parameter(np, internal_np::surface_offset_ratio), s.confinement.offset_ratio);
   CGAL_precondition(s.time_step > 0. && s.damping >= 0. && s.skin > 0.);
   CGAL_precondition(s.min_overlap <= s.max_overlap);
   // the predicted positions must stay inside the neighbour lists' reach
