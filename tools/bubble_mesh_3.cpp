@@ -100,6 +100,12 @@ const char* usage_text =
 "                             of a thin layer, or between a fault tip and a horizon\n"
 "                             (default 2; 1 halves the sizes there, fewer tetrahedra and\n"
 "                             a faster run; 0 turns the rule off)\n"
+"  --size-grading G           with --remesh-surfaces: largest ratio between the sizes of\n"
+"                             neighbouring edges (default 1.5, above 1). Nearer 1 the\n"
+"                             sizes change more slowly away from thin layers and small\n"
+"                             features: better-shaped tetrahedra, more of them (bundled\n"
+"                             model: 1.2 gives an aspect-ratio median of 1.80 instead of\n"
+"                             1.85 with 42 % more tetrahedra)\n"
 "  --summary-json FILE        also write the model summary as JSON to FILE\n"
 "  --merge-tolerance T        merge points closer than T times the bounding-box\n"
 "                             diagonal (default 0: merge exactly coincident points only)\n"
@@ -133,6 +139,9 @@ struct Options
   // edges across a thin layer: Remeshing_sizing_field's elements_across_thickness
   double layer_elements = BM::Remeshing_sizing_field<K>::default_elements_across_thickness;
   bool layer_elements_given = false;
+  // Remeshing_sizing_field's size_grading
+  double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
+  bool size_grading_given = false;
 };
 
 [[noreturn]] void usage_error(const std::string& msg)
@@ -205,6 +214,13 @@ Options parse_options(int argc, char** argv)
       o.layer_elements = n;
       o.layer_elements_given = true;
     }
+    else if(a == "--size-grading")
+    {
+      const double g = parse_double(a, value(a));
+      if(!(g > 1.) || !(g <= 10.)) usage_error("--size-grading takes a ratio above 1 and at most 10, got '" + args[i] + "'");
+      o.size_grading = g;
+      o.size_grading_given = true;
+    }
     else if(!a.empty() && a[0] == '-' && a != "-") usage_error("unknown option '" + a + "'");
     else if(o.input.empty()) o.input = a;
     else usage_error("more than one input file ('" + o.input + "' and '" + a + "')");
@@ -215,6 +231,8 @@ Options parse_options(int argc, char** argv)
     usage_error("--size is the target of --remesh-surfaces: give both");
   if(o.layer_elements_given && !o.remesh_surfaces)
     usage_error("--layer-elements is a rule of --remesh-surfaces: give both");
+  if(o.size_grading_given && !o.remesh_surfaces)
+    usage_error("--size-grading is a rule of --remesh-surfaces: give both");
   if(o.threads < 0) usage_error("--threads must not be negative");
   if(!(o.planar_angle_bound >= 0. && o.planar_angle_bound <= 30.))
     usage_error("--planar-angle-bound must be in [0, 30] degrees");
@@ -321,7 +339,8 @@ int main(int argc, char** argv)
                     BM::parameters::planar_angle_bound(opt.planar_angle_bound,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
                     BM::parameters::elements_across_thickness(opt.layer_elements,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))));
+                    BM::parameters::size_grading(opt.size_grading,
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

@@ -127,6 +127,43 @@ run "$tmp/slab.obj" --remesh-surfaces --layer-elements -1
 check "--layer-elements -1 exits 2" test "$rc" -eq 2
 check "--help lists --layer-elements" bash -c "'$exe' --help | grep -q -- --layer-elements"
 
+# --size-grading: the slab of 0.1 on a box 1 thick (their interface shared); the
+# layer rule makes the slab fine, and the box's far faces get coarser the faster
+# the sizes may grow: more triangles with 1.2 than with the default 1.5
+python3 - "$tmp/slab_box.obj" <<'PY'
+import sys
+def box(name, z0, z1, o, base):
+    v=[(x,y,z) for z in (z0,z1) for y in (0,1) for x in (0,1)]
+    i=lambda x,y,z: base+v.index((x,y,z))+1
+    q=[[(0,0,z0),(0,1,z0),(1,1,z0),(1,0,z0)],[(0,0,z1),(1,0,z1),(1,1,z1),(0,1,z1)],
+       [(0,0,z0),(1,0,z0),(1,0,z1),(0,0,z1)],[(1,0,z0),(1,1,z0),(1,1,z1),(1,0,z1)],
+       [(1,1,z0),(0,1,z0),(0,1,z1),(1,1,z1)],[(0,1,z0),(0,0,z0),(0,0,z1),(0,1,z1)]]
+    o.write('o %s\n'%name)
+    for p in v: o.write('v %g %g %g\n'%p)
+    # each quad split on its diagonal through the corner of smallest (z, y, x)
+    for quad in q:
+        k=min(range(4), key=lambda t:(quad[t][2],quad[t][1],quad[t][0])); a,b,c,d=quad[k:]+quad[:k]
+        o.write('f %d %d %d\nf %d %d %d\n'%(i(*a),i(*b),i(*c),i(*a),i(*c),i(*d)))
+with open(sys.argv[1],'w') as o:
+    box('Slab', 0., 0.1, o, 0)
+    box('Box', 0.1, 1.1, o, 8)
+PY
+grading_triangles() { echo "$out" | sed -n 's/^surface remeshing: [0-9]* -> \([0-9]*\) triangles.*/\1/p'; }
+run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --no-sliver-removal --threads 2
+check "--remesh-surfaces on the slab and box exits 0" test "$rc" -eq 0
+g15="$(grading_triangles)"
+run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --size-grading 1.2 --no-sliver-removal --threads 2
+g12="$(grading_triangles)"
+echo "  slab and box re-meshed triangles with size grading 1.5 (default) / 1.2: $g15 / $g12"
+check "--size-grading: more triangles with a slower grading" \
+  test -n "$g15" -a -n "$g12" -a "${g15:-0}" -lt "${g12:-0}"
+run "$tmp/slab_box.obj" --size-grading 1.2
+check "--size-grading without --remesh-surfaces exits 2" test "$rc" -eq 2
+check "--size-grading without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
+run "$tmp/slab_box.obj" --remesh-surfaces --size-grading 1
+check "--size-grading 1 exits 2" test "$rc" -eq 2
+check "--help lists --size-grading" bash -c "'$exe' --help | grep -q -- --size-grading"
+
 # by default each planar face is re-triangulated first: the bottom's needle goes, the cube stays the cube
 run "$tmp/cube.obj" -o "$tmp/p.mesh" --quality-json "$tmp/qp.json" --threads 2
 check "planar pieces: exits 0" test "$rc" -eq 0

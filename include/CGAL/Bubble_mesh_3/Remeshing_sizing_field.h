@@ -82,6 +82,8 @@ public:
 
   /// default of the named parameter `elements_across_thickness`
   static constexpr double default_elements_across_thickness = 2.;
+  /// default of the named parameter `size_grading`
+  static constexpr double default_size_grading = 1.5;
 
 private:
   typedef typename GeomTraits::Triangle_3 Triangle_3;
@@ -183,7 +185,7 @@ public:
     elements_across_ = choose_parameter(get_parameter(np, internal_np::elements_across_thickness),
                                         default_elements_across_thickness);
     minimum_size_ = choose_parameter(get_parameter(np, internal_np::minimum_edge_length), 0.1 * min_patch_size);
-    grading_ = choose_parameter(get_parameter(np, internal_np::size_grading), 1.5);
+    grading_ = choose_parameter(get_parameter(np, internal_np::size_grading), default_size_grading);
     CGAL_precondition_msg(grading_ > 1., "size_grading must be above 1");
     slope_ = grading_ - 1.;
 
