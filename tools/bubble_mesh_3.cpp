@@ -106,6 +106,11 @@ const char* usage_text =
 "                             features: better-shaped tetrahedra, more of them (bundled\n"
 "                             model: 1.2 gives an aspect-ratio median of 1.80 instead of\n"
 "                             1.85 with 42 % more tetrahedra)\n"
+"  --population-rounds N      most rounds of population control (bubbles deleted where\n"
+"                             crowded, inserted in gaps), each followed by a relaxation\n"
+"                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
+"                             30-40 % on the models tried, for an aspect-ratio median up\n"
+"                             to 0.02 higher; 0 keeps the crowded initial bubbles (poor)\n"
 "  --summary-json FILE        also write the model summary as JSON to FILE\n"
 "  --merge-tolerance T        merge points closer than T times the bounding-box\n"
 "                             diagonal (default 0: merge exactly coincident points only)\n"
@@ -139,6 +144,8 @@ struct Options
   // edges across a thin layer: Remeshing_sizing_field's elements_across_thickness
   double layer_elements = BM::Remeshing_sizing_field<K>::default_elements_across_thickness;
   bool layer_elements_given = false;
+  // relax_bubbles()'s number_of_population_rounds
+  std::size_t population_rounds = BM::internal::Dynamics_settings().population_rounds;
   // Remeshing_sizing_field's size_grading
   double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
   bool size_grading_given = false;
@@ -213,6 +220,13 @@ Options parse_options(int argc, char** argv)
       if(!(n >= 0.) || !(n <= 100.)) usage_error("--layer-elements takes a number from 0 to 100, got '" + args[i] + "'");
       o.layer_elements = n;
       o.layer_elements_given = true;
+    }
+    else if(a == "--population-rounds")
+    {
+      const double n = parse_double(a, value(a));
+      if(!(n >= 0.) || n != std::floor(n) || n > 1000.)
+        usage_error("--population-rounds takes a whole number from 0 to 1000, got '" + args[i] + "'");
+      o.population_rounds = std::size_t(n);
     }
     else if(a == "--size-grading")
     {
@@ -340,7 +354,8 @@ int main(int argc, char** argv)
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
                     BM::parameters::elements_across_thickness(opt.layer_elements,
                     BM::parameters::size_grading(opt.size_grading,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))));
+                    BM::parameters::number_of_population_rounds(opt.population_rounds,
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

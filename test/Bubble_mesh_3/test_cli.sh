@@ -164,6 +164,20 @@ run "$tmp/slab_box.obj" --remesh-surfaces --size-grading 1
 check "--size-grading 1 exits 2" test "$rc" -eq 2
 check "--help lists --size-grading" bash -c "'$exe' --help | grep -q -- --size-grading"
 
+# --population-rounds: with 0 no pass thins the initial bubbles (placed about 8 times
+# too dense), so the bundled model keeps more of them than with population control
+mesh_bubbles() { echo "$out" | sed -n 's/^mesh: .*, \([0-9]*\) bubbles.*/\1/p'; }
+run "$model" --population-rounds 0 --no-sliver-removal --threads 2
+check "--population-rounds 0 exits 0" test "$rc" -eq 0
+b0="$(mesh_bubbles)"
+run "$model" --no-sliver-removal --threads 2
+b12="$(mesh_bubbles)"
+echo "  bundled model's bubbles with 0 / 12 (default) population rounds: $b0 / $b12"
+check "--population-rounds 0: the crowded start is kept" test -n "$b0" -a -n "$b12" -a "${b0:-0}" -gt "${b12:-0}"
+run "$model" --population-rounds 2.5
+check "--population-rounds 2.5 exits 2" test "$rc" -eq 2
+check "--help lists --population-rounds" bash -c "'$exe' --help | grep -q -- --population-rounds"
+
 # by default each planar face is re-triangulated first: the bottom's needle goes, the cube stays the cube
 run "$tmp/cube.obj" -o "$tmp/p.mesh" --quality-json "$tmp/qp.json" --threads 2
 check "planar pieces: exits 0" test "$rc" -eq 0
