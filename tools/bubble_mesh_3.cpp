@@ -166,6 +166,15 @@ double parse_double(const std::string& opt, const std::string& s)
   return v;
 }
 
+// a count of passes or rounds: a whole number from 0 to `most`
+std::size_t parse_count(const std::string& opt, const std::string& s, const std::string& what, double most)
+{
+  const double n = parse_double(opt, s);
+  if(!(n >= 0.) || n != std::floor(n) || n > most)
+    usage_error(opt + " takes a number of " + what + " from 0 to " + std::to_string(long(most)) + ", got '" + s + "'");
+  return std::size_t(n);
+}
+
 Options parse_options(int argc, char** argv)
 {
   Options o;
@@ -189,12 +198,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--merge-tolerance") o.merge_tolerance = parse_double(a, value(a));
     else if(a == "--no-sliver-removal") o.sliver_removal = false;
     else if(a == "--keep-steiner-points") o.collapse_steiner_points = false;
-    else if(a == "--smooth")
-    {
-      const double n = parse_double(a, value(a));
-      if(!(n >= 0.) || n != std::floor(n) || n > 1000.) usage_error("--smooth takes a number of passes from 0 to 1000");
-      o.smoothing_passes = std::size_t(n);
-    }
+    else if(a == "--smooth") o.smoothing_passes = parse_count(a, value(a), "passes", 1000.);
     else if(a == "--sliver-bound") o.sliver_bound = parse_double(a, value(a));
     else if(a == "--remesh-surfaces") o.remesh_surfaces = true;
     else if(a == "--force-law")
@@ -221,13 +225,7 @@ Options parse_options(int argc, char** argv)
       o.layer_elements = n;
       o.layer_elements_given = true;
     }
-    else if(a == "--population-rounds")
-    {
-      const double n = parse_double(a, value(a));
-      if(!(n >= 0.) || n != std::floor(n) || n > 1000.)
-        usage_error("--population-rounds takes a whole number from 0 to 1000, got '" + args[i] + "'");
-      o.population_rounds = std::size_t(n);
-    }
+    else if(a == "--population-rounds") o.population_rounds = parse_count(a, value(a), "rounds", 1000.);
     else if(a == "--size-grading")
     {
       const double g = parse_double(a, value(a));
