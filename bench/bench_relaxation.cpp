@@ -59,11 +59,13 @@ const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin LIST]\n"
   "       bench_relaxation alpha [MODEL ...] [--threads N] [--skin S] [--rounds]\n"
   "                            [--remesh-surfaces | --planar] [--repulsive] [--by-wall]\n"
+  "                            [--cell-edge-factor F] [--damping C] [--resting R]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
   "            bubbles, placement, one population pass (the crowded start thinned), then\n"
-  "            N relaxation steps (default 100; no population control, no early stop)\n"
+  "            N relaxation steps (default 100; no population control, no early stop,\n"
+  "            no resting bubbles: a tolerance of 0 leaves none at rest)\n"
   "            from that same start with each thread count of LIST (default 1,2).\n"
   "            Prints bubble-steps per second over steps W+1 to N (default W = 20: the\n"
   "            first steps of a crowded start cost more confinement work; wall clock\n"
@@ -81,6 +83,11 @@ const char* usage =
   "            CGAL::Side_of_triangle_mesh; overlap-ratio quantiles, histogram and the\n"
   "            share inside [10,14]. --rounds prints a line at the end of every\n"
   "            population round (region, changes, population, steps, last move).\n"
+  "            --cell-edge-factor passes place_initial_bubbles()'s cell_edge_factor\n"
+  "            (default 1: the paper's lattice). --damping passes relax_bubbles()'s\n"
+  "            damping c (default: its own, 2 sqrt(m k) = 2 with m = k = 1).\n"
+  "            --resting passes its resting_displacement_ratio (default: its own;\n"
+  "            0: every bubble moves at every step). Bubble-steps count moved bubbles.\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
@@ -294,7 +301,7 @@ void print_wall_classes(const Model& m, const std::vector<Bubble>& interior, con
 }
 
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, bool planar, bool repulsive, bool by_wall)
+                bool remesh, bool planar, bool repulsive, bool by_wall, double cell_edge_factor, double damping, double resting)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -347,16 +354,20 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     if(repulsive) name += " (repulsive law)";
     const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
     const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
-    std::vector<Bubble> interior = BM::place_initial_bubbles(m, surface, sizing);
+    std::vector<Bubble> interior =
+      BM::place_initial_bubbles(m, surface, sizing, params::cell_edge_factor(cell_edge_factor));
     const std::size_t placed = interior.size();
     Step_clock clock;
     clock.print_rounds = print_rounds;
     const std::string load = load_average();
     const double c0 = cpu_seconds();
-    const auto np = params::number_of_threads(threads, params::neighbor_skin(skin, params::visitor(std::ref(clock))));
-    const BM::Relaxation_report rep =
-      repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), np))
-                : BM::relax_bubbles(m, surface, interior, sizing, np);
+    const auto np = params::number_of_threads(
+      threads, params::resting_displacement_ratio(resting, params::neighbor_skin(skin, params::visitor(std::ref(clock)))));
+    const auto relax = [&](const auto& with) {
+      return repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), with))
+                       : BM::relax_bubbles(m, surface, interior, sizing, with);
+    };
+    const BM::Relaxation_report rep = damping > 0. ? relax(params::damping(damping, np)) : relax(np);
     const double cpu = cpu_seconds() - c0;
     const Region_sides<K> sides(m);
     std::size_t outside = 0;
@@ -433,7 +444,8 @@ int main(int argc, char** argv)
     return 2;
   }
   const bool alpha = std::strcmp(argv[1], "alpha") == 0;
-  double edge_length = 12.;
+  double edge_length = 12., cell_edge_factor = 1., damping = 0.;
+  double resting = BM::internal::Dynamics_settings().rest_ratio; // relax_bubbles()'s default
   std::size_t steps = 100, warmup = 20;
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
@@ -455,6 +467,9 @@ int main(int argc, char** argv)
         skins.push_back(std::atof(item.c_str()));
     }
     else if(a == "--rounds" && alpha) print_rounds = true;
+    else if(a == "--cell-edge-factor" && alpha && has_value) cell_edge_factor = std::atof(argv[++i]);
+    else if(a == "--damping" && alpha && has_value) damping = std::atof(argv[++i]);
+    else if(a == "--resting" && alpha && has_value) resting = std::atof(argv[++i]);
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
     else if(a == "--planar" && alpha) planar = true;
     else if(a == "--repulsive" && alpha) repulsive = true;
@@ -474,7 +489,7 @@ int main(int argc, char** argv)
     else models.push_back(a);
   }
   const bool bad_skin = skins.empty() || std::any_of(skins.begin(), skins.end(), [](double s) { return !(s > 0.); });
-  if(threads.empty() || !(edge_length > 0.) || bad_skin || warmup == 0 || warmup >= steps)
+  if(threads.empty() || !(edge_length > 0.) || !(cell_edge_factor > 0.) || !(resting >= 0. && resting < 1.) || bad_skin || warmup == 0 || warmup >= steps)
   {
     std::cerr << usage;
     return 2;
@@ -484,5 +499,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive, by_wall);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive, by_wall, cell_edge_factor, damping, resting);
 }

@@ -404,6 +404,51 @@ static void test_no_clumps()
   assert(worst < 16.);
 }
 
+// -- 5c. resting bubbles (resting_displacement_ratio): the same pipeline with
+// every bubble moved at every step and with bubbles at rest left alone must
+// end as well packed, in as good an equilibrium, for fewer bubble-steps
+static void test_resting()
+{
+  const double L = 400.;
+  const Model cube = make_cube(L, 16);
+  const std::vector<Bubble> surface = BM::place_surface_bubbles(cube);
+  const BM::Surface_bubble_sizing_field<K> sizing(cube, surface);
+  const std::vector<Bubble> start = BM::place_initial_bubbles(cube, surface, sizing);
+  double bubble_steps[2] = {0., 0.}, first_move[2] = {0., 0.};
+  std::size_t steps_to_rest[2] = {0, 0};
+  for(int resting = 0; resting < 2; ++resting)
+  {
+    std::vector<Bubble> interior = start;
+    const double ratio = resting ? BM::internal::Dynamics_settings().rest_ratio : 0.;
+    const BM::Relaxation_report rep =
+      BM::relax_bubbles(cube, surface, interior, sizing, params::resting_displacement_ratio(ratio));
+    std::size_t outside = 0;
+    const std::size_t in_ball = violations(cube, interior, L, outside);
+    // from the result, with everyone moving and no population control: how far from rest was it?
+    std::vector<Bubble> again = interior;
+    auto first = [&](const BM::Relaxation_progress& p) {
+      if(p.step == 1 && !p.end_of_round) first_move[resting] = p.max_displacement;
+    };
+    const BM::Relaxation_report after = BM::relax_bubbles(
+      cube, surface, again, sizing,
+      params::number_of_population_rounds(0, params::resting_displacement_ratio(0., CGAL::parameters::visitor(first))));
+    std::cout << "resting ratio " << ratio << ": " << rep.population << " bubbles, " << rep.steps << " steps, "
+              << rep.bubble_steps << " bubble-steps (bubbles moved), " << 100. * rep.share_inside_bounds()
+              << " % inside [10,14]; outside " << outside << ", in a diametral ball " << in_ball
+              << "; relaxed again with all moving: first move " << first_move[resting] << " r, " << after.steps
+              << " steps to rest" << std::endl;
+    assert(rep.converged() && after.converged());
+    assert(outside == 0 && in_ball == 0);
+    assert(rep.share_inside_bounds() >= 0.95);
+    bubble_steps[resting] = rep.bubble_steps;
+    steps_to_rest[resting] = after.steps;
+  }
+  assert(bubble_steps[1] < 0.9 * bubble_steps[0]);
+  // left as near rest as with everyone moving
+  assert(first_move[1] < 10. * BM::internal::Dynamics_settings().tolerance);
+  assert(steps_to_rest[1] <= 2 * steps_to_rest[0] + 50);
+}
+
 // -- 6. the default layered model: placement, then relaxation; checked with
 // CGAL::Side_of_triangle_mesh on each region's closed boundary (the dynamics
 // use their own ray parity)
@@ -482,6 +527,7 @@ int main()
   std::cout << "1 vs 2 threads: " << one.size() << " bubbles, " << differ << " differ bit-wise" << std::endl;
   assert(differ == 0);
   test_no_clumps();
+  test_resting();
   test_layered_model();
   return EXIT_SUCCESS;
 }

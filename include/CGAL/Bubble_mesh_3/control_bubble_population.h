@@ -121,6 +121,7 @@ struct Dynamics_settings
   double skin = 0.25;
   double max_step = 0.125;
   double radius_update = 0.1;
+  double rest_ratio = 0.25;
   std::size_t threads = 0;
   Confinement_settings confinement;
 };
@@ -145,6 +146,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.max_overlap = choose_parameter(get_parameter(np, internal_np::max_overlap_ratio), s.max_overlap);
   s.population_rounds = choose_parameter(get_parameter(np, internal_np::number_of_population_rounds), s.population_rounds);
   s.population_tolerance = choose_parameter(get_parameter(np, internal_np::population_tolerance), s.population_tolerance);
+  s.rest_ratio = choose_parameter(get_parameter(np, internal_np::resting_displacement_ratio), s.rest_ratio);
   s.insertion_clearance = choose_parameter(get_parameter(np, internal_np::insertion_clearance), s.insertion_clearance);
   s.skin = choose_parameter(get_parameter(np, internal_np::neighbor_skin), s.skin);
   s.max_step = choose_parameter(get_parameter(np, internal_np::max_step_ratio), s.max_step);
@@ -155,6 +157,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.confinement.offset_ratio = choose_parameter(get_parameter(np, internal_np::surface_offset_ratio), s.confinement.offset_ratio);
   CGAL_precondition(s.time_step > 0. && s.damping >= 0. && s.skin > 0.);
   CGAL_precondition(s.min_overlap <= s.max_overlap);
+  CGAL_precondition(s.rest_ratio >= 0. && s.rest_ratio < 1.);
   // the predicted positions must stay inside the neighbour lists' reach
   s.max_step = (std::min)(s.max_step, 0.9 * s.skin);
   return s;

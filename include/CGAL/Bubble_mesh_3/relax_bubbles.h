@@ -67,7 +67,7 @@ struct Region_relaxation_report
   std::size_t population = 0;         ///< interior bubbles returned
   std::size_t surface_bubbles = 0;    ///< fixed bubbles on the region's surfaces
   std::size_t steps = 0;              ///< integration steps, all rounds
-  double bubble_steps = 0.;           ///< sum over steps of the interior population
+  double bubble_steps = 0.;           ///< sum over steps of the free bubbles moved (resting ones not counted)
   std::size_t list_rebuilds = 0;      ///< rebuilds of the neighbour lists, all rounds
   std::size_t rounds = 0;             ///< population rounds done
   std::size_t added = 0;              ///< inserted by population control
@@ -188,6 +188,23 @@ public:
     return std::size_t(std::count_if(disp_.begin(), disp_.begin() + s_.n_free, [d](double v) { return v > d; }));
   }
 
+  /*
+  Resting bubbles. After a population pass most of a large region is soon at
+  rest while a few parts still move (next to the changes, against walls), and
+  every step used to move everyone. A free bubble whose steps stay under
+  `threshold` (times its radius) for `rest_after_steps` steps in a row rests:
+  it is not moved and its forces are not summed, until a bubble of its list
+  moves more than `threshold` in one step, or until every `full_step_period`-th
+  step moves all bubbles (drift slower than the threshold adds up, and
+  neighbours that left the list are seen again). The threshold is a share of
+  the relaxation's tolerance, so a resting bubble is one that would not hold
+  up convergence anyway. Every flag is decided from the last step's
+  displacements alone: the result does not depend on the number of threads.
+  */
+  void set_rest_threshold(double threshold) { rest_threshold_ = threshold; }
+  /// the free bubbles moved in the last step
+  std::size_t moving_bubbles() const { return moving_; }
+
   /// to call after the population changed
   void reset()
   {
@@ -199,6 +216,9 @@ public:
     f0x_.assign(n, 0.); f0y_.assign(n, 0.); f0z_.assign(n, 0.);
     f1x_.assign(n, 0.); f1y_.assign(n, 0.); f1z_.assign(n, 0.);
     ke_.assign(n, 0.); disp_.assign(n, 0.);
+    resting_.assign(n, 0); quiet_steps_.assign(n, 0);
+    steps_since_full_ = 0;
+    moving_ = n;
     follow_sizing_ = true;
     steps_ = 0;
     CGAL_USE(total);
@@ -214,6 +234,12 @@ public:
     for_each_block<ConcurrencyTag>(n, 512, [&](std::size_t b, std::size_t e) {
       for(std::size_t i = b; i < e; ++i)
       {
+        if(resting_[i])
+        {
+          px_[i] = s_.x[i]; py_[i] = s_.y[i]; pz_[i] = s_.z[i];
+          pvx_[i] = pvy_[i] = pvz_[i] = 0.;
+          continue;
+        }
         const double inv_m = inv_mass_[i], c = damping_[i];
         double dx = dt * s_.vx[i], dy = dt * s_.vy[i], dz = dt * s_.vz[i];
         const double len = std::sqrt(dx * dx + dy * dy + dz * dz), lim = st_.max_step * s_.r[i];
@@ -231,6 +257,7 @@ public:
     for_each_block<ConcurrencyTag>(n, 512, [&](std::size_t b, std::size_t e) {
       for(std::size_t i = b; i < e; ++i)
       {
+        if(resting_[i]) { disp_[i] = 0.; ke_[i] = 0.; continue; }
         const double ri = s_.r[i], inv_m = inv_mass_[i], c = damping_[i];
         double dx = 0.5 * dt * (s_.vx[i] + pvx_[i]);
         double dy = 0.5 * dt * (s_.vy[i] + pvy_[i]);
@@ -295,6 +322,8 @@ public:
     });
     const std::pair<double, double> sm =
       deterministic_sum_and_max<ConcurrencyTag>(n, [&](std::size_t i) { return std::make_pair(ke_[i], disp_[i]); });
+    // (before the forces below: a bubble woken now needs its force for the next step)
+    if(rest_threshold_ > 0.) update_resting();
     update_lists(s_.x.data(), s_.y.data(), s_.z.data());
     forces(s_.x.data(), s_.y.data(), s_.z.data(), f0x_.data(), f0y_.data(), f0z_.data());
     // Radii are held once the motion is small: where the sizing field jumps (a
@@ -311,6 +340,47 @@ public:
   }
 
 private:
+  // see set_rest_threshold()
+  static constexpr unsigned char rest_after_steps = 5;
+  static constexpr std::size_t full_step_period = 50;
+  void update_resting()
+  {
+    const std::size_t n = s_.n_free;
+    const bool full = ++steps_since_full_ >= full_step_period;
+    if(full) steps_since_full_ = 0;
+    const double threshold = rest_threshold_;
+    const std::uint32_t* nb = nbr_.data();
+    const std::size_t* off = offset_.data();
+    for_each_block<ConcurrencyTag>(n, 512, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
+      {
+        if(!resting_[i])
+        {
+          if(disp_[i] >= threshold) { quiet_steps_[i] = 0; continue; }
+          if(quiet_steps_[i] < rest_after_steps) ++quiet_steps_[i];
+          // (a bubble woken by the full step rests again after one more quiet step)
+          if(quiet_steps_[i] >= rest_after_steps && !full)
+          {
+            resting_[i] = 1;
+            s_.vx[i] = s_.vy[i] = s_.vz[i] = 0.;
+          }
+        }
+        else if(full)
+          resting_[i] = 0;
+        else
+          // the lists also hold the fixed bubbles (index n and up), which never move
+          for(const std::uint32_t* it = nb + off[i]; it != nb + off[i + 1]; ++it)
+            if(*it < n && disp_[*it] > threshold)
+            {
+              resting_[i] = 0;
+              quiet_steps_[i] = 0;
+              break;
+            }
+      }
+    });
+    moving_ = n - std::size_t(std::count(resting_.begin(), resting_.begin() + n, (unsigned char)(1)));
+  }
+
   // f(w) (r_i + r_j) / l with w = l / (r_i + r_j), the pair force over the distance
   double force_over_distance(double l, double sum) const { return law_(l / sum) * sum / l; }
 
@@ -419,6 +489,7 @@ private:
       {
         const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
         double fx = 0., fy = 0., fz = 0.;
+        if(resting_[i]) { FX[i] = FY[i] = FZ[i] = 0.; continue; } // not moved: its force is not used
         if(!strays) sum_list<false>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], aw + off[i], stray, fx, fy, fz);
         else if(!stray[i])
           sum_list<true>(i, xi, yi, zi, ri, P, nb + off[i], nb + off[i + 1], aw + off[i], stray, fx, fy, fz);
@@ -760,6 +831,9 @@ private:
   std::vector<double> px_, py_, pz_, pvx_, pvy_, pvz_;   // predicted state (px_ also holds the fixed bubbles)
   std::vector<double> f0x_, f0y_, f0z_, f1x_, f1y_, f1z_;
   std::vector<double> ke_, disp_;
+  std::vector<unsigned char> resting_, quiet_steps_;     // per free bubble, see set_rest_threshold()
+  double rest_threshold_ = 0.;
+  std::size_t steps_since_full_ = 0, moving_ = 0;
   std::vector<double> rx_, ry_, rz_, rr_;                 // positions and radii at the last list rebuild
   std::vector<double> inv_mass_, damping_;                // per bubble, after mass scaling
   std::vector<double> xyzr_;                              // forces()'s work space
@@ -829,6 +903,7 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
 
   auto relax = [&](std::size_t round, const Population_change& change, double tolerance) {
     relaxer.reset();
+    relaxer.set_rest_threshold(st.rest_ratio * tolerance);
     Relaxation_progress p;
     p.region = s.region;
     p.round = round;
@@ -842,7 +917,7 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
     {
       const auto f = relaxer.step();
       ++rep.steps;
-      rep.bubble_steps += double(s.n_free);
+      rep.bubble_steps += double(relaxer.moving_bubbles());
       p.step = k;
       p.total_steps = rep.steps;
       p.kinetic_energy = rep.kinetic_energy = f.kinetic_energy;
@@ -1050,7 +1125,12 @@ later in the same pass, so that empty parts fill in one pass. A relaxation
 stops when the largest displacement of a step is under its tolerance, or
 when at most one bubble in ten thousand moves more than the tolerance and
 none more than 20 times it (a few bubbles of a large region do not come to
-rest within the step budget).
+rest within the step budget). A bubble whose steps stay under
+`resting_displacement_ratio` of the tolerance for 5 steps rests (is neither
+moved nor given forces) until a bubble of its neighbour list moves more than
+that, or the next full step (every 50th); after a population pass most of a
+large region is at rest within tens of steps while the parts next to the
+changes still move, and those are all that the following steps pay for.
 
 <b>Parallelism and determinism.</b> Regions relax independently (their
 surface bubbles are fixed) and, with `CGAL::Parallel_tag` and TBB, at the
@@ -1166,6 +1246,14 @@ the end.
   \cgalParamNBegin{radius_update_ratio}
     \cgalParamDescription{a radius is read again from the sizing field after its bubble moved this share of it}
     \cgalParamType{`double`} \cgalParamDefault{0.1}
+  \cgalParamNEnd
+  \cgalParamNBegin{resting_displacement_ratio}
+    \cgalParamDescription{a free bubble whose steps stay under this share of the relaxation's tolerance
+      (times its radius) for 5 steps in a row rests: it is not moved and its forces are not summed until
+      a bubble of its neighbour list moves more than that in one step, or the next full step (every 50th
+      step moves all bubbles); 0 moves every bubble at every step. Must be under 1, so that a resting
+      bubble never holds up convergence.}
+    \cgalParamType{`double`} \cgalParamDefault{0.25}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_radius_update_steps}
     \cgalParamDescription{radii follow the sizing field during this many steps of each relaxation, then are held}

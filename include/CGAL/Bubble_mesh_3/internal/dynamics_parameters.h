@@ -42,6 +42,7 @@ enum insertion_clearance_t { insertion_clearance };
 enum neighbor_skin_t { neighbor_skin };
 enum max_step_ratio_t { max_step_ratio };
 enum radius_update_ratio_t { radius_update_ratio };
+enum resting_displacement_ratio_t { resting_displacement_ratio };
 enum diametral_ball_margin_t { diametral_ball_margin };
 enum max_protected_ball_ratio_t { max_protected_ball_ratio };
 enum surface_offset_ratio_t { surface_offset_ratio };
@@ -85,6 +86,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, neighbor_skin)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, max_step_ratio)
 /// a bubble's radius is read again from the sizing field after it moved this share of it (default 0.1)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, radius_update_ratio)
+/// a free bubble whose steps stay under this share of the relaxation's tolerance for 5 steps rests (is not
+/// moved) until a bubble near it moves more, or the next of the full steps that come every 50 (default 0.25;
+/// 0: every bubble moves at every step)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, resting_displacement_ratio)
 /// bubble centres stay farther than (1 + margin) times a diametral ball's radius from its centre (default 0.02)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, diametral_ball_margin)
 /// diametral balls wider than this times the local surface-bubble radius are not protected (default 3)
