@@ -145,7 +145,7 @@ struct Options
   double layer_elements = BM::Remeshing_sizing_field<K>::default_elements_across_thickness;
   bool layer_elements_given = false;
   // relax_bubbles()'s number_of_population_rounds
-  std::size_t population_rounds = BM::internal::Dynamics_settings().population_rounds;
+  std::size_t population_rounds = BM::default_number_of_population_rounds;
   // Remeshing_sizing_field's size_grading
   double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
   bool size_grading_given = false;
@@ -325,7 +325,8 @@ int main(int argc, char** argv)
       last_line = now;
       std::ostringstream line;
       line << "  region " << p.region << ", round " << p.round << ", step " << p.step << ": " << p.population
-           << " bubbles (+" << p.added << " -" << p.removed << "), largest move " << std::setprecision(2)
+           << " bubbles (+" << p.added << " -" << p.removed << "), " << p.moving << " moving, largest move "
+           << std::setprecision(2)
            << p.max_displacement << " r, " << std::fixed << std::setprecision(0) << now << " s";
       std::string text = line.str();
       // on a terminal, blank what is left of a longer previous line

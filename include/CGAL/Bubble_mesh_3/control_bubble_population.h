@@ -42,6 +42,10 @@ struct Population_change
   std::size_t removed = 0; ///< over-populated interior bubbles deleted
 };
 
+/// \ingroup PkgBubbleMesh3Ref
+/// default of the named parameter `number_of_population_rounds` of `relax_bubbles()`
+constexpr std::size_t default_number_of_population_rounds = 12;
+
 namespace internal {
 
 // ---- deterministic parallel loops -------------------------------------------
@@ -115,7 +119,7 @@ struct Dynamics_settings
   std::size_t radius_update_steps = 300;
   double min_overlap = 10.;
   double max_overlap = 14.;
-  std::size_t population_rounds = 12;
+  std::size_t population_rounds = default_number_of_population_rounds;
   double population_tolerance = 0.002;
   double insertion_clearance = 0.7;
   double skin = 0.25;

@@ -52,6 +52,7 @@ struct Relaxation_progress
   std::size_t added = 0;         ///< bubbles inserted by this round's population control
   std::size_t removed = 0;       ///< bubbles deleted by this round's population control
   std::size_t population = 0;    ///< interior bubbles of the region
+  std::size_t moving = 0;        ///< of those, the ones moved in the last step (the others rest, see `resting_displacement_ratio`)
   bool end_of_round = false;     ///< true for the call that closes a round
 };
 
@@ -922,6 +923,7 @@ Region_relaxation_report relax_region(Bubble_system<K>& s, const ForceLaw& law, 
       p.total_steps = rep.steps;
       p.kinetic_energy = rep.kinetic_energy = f.kinetic_energy;
       p.max_displacement = rep.max_displacement = f.max_displacement;
+      p.moving = relaxer.moving_bubbles();
       if(!visitor(p)) { rep.interrupted = true; break; }
       if(f.max_displacement < tolerance) { rep.converged = true; break; }
       // In a large region a few bubbles (near a surface, under a steady force but
