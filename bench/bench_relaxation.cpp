@@ -367,7 +367,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
       return repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), with))
                        : BM::relax_bubbles(m, surface, interior, sizing, with);
     };
-    const BM::Relaxation_report rep = damping > 0. ? relax(params::damping(damping, np)) : relax(np);
+    const BM::Relaxation_report rep = damping >= 0. ? relax(params::damping(damping, np)) : relax(np);
     const double cpu = cpu_seconds() - c0;
     const Region_sides<K> sides(m);
     std::size_t outside = 0;
@@ -444,7 +444,7 @@ int main(int argc, char** argv)
     return 2;
   }
   const bool alpha = std::strcmp(argv[1], "alpha") == 0;
-  double edge_length = 12., cell_edge_factor = 1., damping = 0.;
+  double edge_length = 12., cell_edge_factor = 1., damping = -1.; // damping < 0: relax_bubbles()'s own
   double resting = BM::internal::Dynamics_settings().rest_ratio; // relax_bubbles()'s default
   std::size_t steps = 100, warmup = 20;
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
@@ -468,7 +468,11 @@ int main(int argc, char** argv)
     }
     else if(a == "--rounds" && alpha) print_rounds = true;
     else if(a == "--cell-edge-factor" && alpha && has_value) cell_edge_factor = std::atof(argv[++i]);
-    else if(a == "--damping" && alpha && has_value) damping = std::atof(argv[++i]);
+    else if(a == "--damping" && alpha && has_value)
+    {
+      damping = std::atof(argv[++i]);
+      if(!(damping >= 0.)) { std::cerr << "--damping takes a number >= 0, got '" << argv[i] << "'\n" << usage; return 2; }
+    }
     else if(a == "--resting" && alpha && has_value) resting = std::atof(argv[++i]);
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
     else if(a == "--planar" && alpha) planar = true;
