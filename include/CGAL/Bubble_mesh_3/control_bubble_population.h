@@ -122,7 +122,7 @@ struct Dynamics_settings
   std::size_t population_rounds = default_number_of_population_rounds;
   double population_tolerance = 0.002;
   double insertion_clearance = 0.7;
-  double skin = 0.25;
+  double skin = 0.35;
   double max_step = 0.125;
   double radius_update = 0.1;
   double rest_ratio = 0.25;

@@ -723,7 +723,7 @@ private:
   crossing the sphere changes the force by little: the weights are taken at
   each list rebuild, and a switch there would keep bubbles near rest moving.
   Entry e of the list gets weight[e]. Entries of weight 0 farther than
-  1 + 2 skin times the sum of radii are dropped (the new count is returned):
+  1 + skin times the sum of radii are dropped (the new count is returned):
   before the next rebuild they cannot come close enough to repel.
   */
   std::size_t attraction_weights(std::size_t i, std::uint32_t* entries, float* weight, std::size_t count,
@@ -742,8 +742,12 @@ private:
       KX[e] = ax; KY[e] = ay; KZ[e] = az; KD[e] = ax * ax + ay * ay + az * az;
     }
     if(m > count) { KX[count] = KY[count] = KZ[count] = 0.; KD[count] = (std::numeric_limits<double>::max)(); }
-    // a pair this close cannot attract before the next rebuild
-    const double close = (std::max)(0., 1. - 2. * st_.skin), far = 1. + 2. * st_.skin;
+    // A pair this close cannot attract before the next rebuild, one this far cannot
+    // repel: until then each of i and j moves, plus its radius growth, less than
+    // skin times its radius (else it is a stray, whose pairs come from the grid), so
+    // the gap between the two spheres changes by less than skin times the sum of radii.
+    // (A little margin against rounding.)
+    const double close = (std::max)(0., 1. - 1.001 * st_.skin), far = 1. + 1.001 * st_.skin;
     for(std::size_t e = 0; e < count; ++e)
     {
       const double sum = ri + s_.r[entries[e]], ajx = KX[e], ajy = KY[e], ajz = KZ[e], aj2 = KD[e];
@@ -1237,9 +1241,9 @@ the end.
   \cgalParamNEnd
   \cgalParamNBegin{neighbor_skin}
     \cgalParamDescription{reach of the neighbour lists beyond the force's, over the sum of radii:
-      larger rebuilds them less often but makes them longer (from a crowded start, 0.25 rebuilds
-      about every 5 steps and 0.15 every 2.6; 0.25 was the fastest of 0.15-0.4, see bench/README.md)}
-    \cgalParamType{`double`} \cgalParamDefault{0.25}
+      larger rebuilds them less often but makes them longer (from a crowded start, 0.35 rebuilds
+      about every 7 steps and 0.25 every 4.6; 0.35 was the fastest of 0.25-0.4, see bench/README.md)}
+    \cgalParamType{`double`} \cgalParamDefault{0.35}
   \cgalParamNEnd
   \cgalParamNBegin{max_step_ratio}
     \cgalParamDescription{longest move in one step over the radius (capped at 0.9 `neighbor_skin`)}
