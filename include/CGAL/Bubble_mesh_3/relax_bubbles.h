@@ -502,7 +502,7 @@ private:
 
   // the pairs of the strays, in increasing stray order: with the others from the grid
   // of the last rebuild, then among themselves
-  void add_stray_forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ) const
+  void add_stray_forces(const double* X, const double* Y, const double* Z, double* FX, double* FY, double* FZ)
   {
     const double* R = s_.r.data();
     const std::size_t n = s_.n_free;
@@ -515,8 +515,8 @@ private:
       grid_.for_each_near_packed(xi, yi, zi, cutoff * ri, b, [&](std::size_t j, const double*) {
         if(j == i || is_stray_[j]) return;
         double fx = 0., fy = 0., fz = 0.;
-        add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1., [&] { return stray_weight(i, j); },
-                 fx, fy, fz);
+        add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1.,
+                 [&] { return cached_stray_weight(i, j); }, fx, fy, fz);
         FX[i] += fx; FY[i] += fy; FZ[i] += fz;
         if(j < n) { FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz; }
       });
@@ -526,11 +526,24 @@ private:
       {
         const std::size_t i = strays_[a], j = strays_[c];
         double fx = 0., fy = 0., fz = 0.;
-        add_pair(X[i] - X[j], Y[i] - Y[j], Z[i] - Z[j], R[i] + R[j], -1., [&] { return stray_weight(i, j); }, fx, fy,
-                 fz);
+        add_pair(X[i] - X[j], Y[i] - Y[j], Z[i] - Z[j], R[i] + R[j], -1., [&] { return cached_stray_weight(i, j); },
+                 fx, fy, fz);
         FX[i] += fx; FY[i] += fy; FZ[i] += fz;
         FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz;
       }
+  }
+
+  // stray_weight(i, j) depends on the positions of the last rebuild only, so it is
+  // kept until the next one: a stray asks for the same pairs at every force
+  // evaluation (a grid query per pair otherwise).
+  float cached_stray_weight(std::size_t i, std::size_t j)
+  {
+    std::vector<std::pair<std::uint32_t, float> >& cache = stray_weights_[i];
+    for(const auto& e : cache)
+      if(e.first == j) return e.second;
+    const float w = stray_weight(i, j);
+    cache.emplace_back(std::uint32_t(j), w);
+    return w;
   }
 
   // the strays at positions (X, Y, Z): bubbles that moved, plus cutoff times their
@@ -561,6 +574,9 @@ private:
   {
     ++rebuilds_;
     const std::size_t n = s_.n_free;
+    // (every cache: a bubble may have strayed and come back since the last rebuild)
+    stray_weights_.resize(n);
+    for(auto& cache : stray_weights_) cache.clear();
     strays_.clear();
     is_stray_.assign(s_.size(), 0);
     const double reach = law_.cutoff() + st_.skin;
@@ -847,6 +863,7 @@ private:
   std::vector<std::uint32_t> strays_;                    // free bubbles beyond their lists' skin, increasing
   std::vector<unsigned char> is_stray_;                  // per bubble (fixed ones never stray)
   std::vector<float> attraction_;                        // per list entry, see attraction_weights()
+  std::vector<std::vector<std::pair<std::uint32_t, float> > > stray_weights_; // per bubble, see cached_stray_weight()
   std::vector<std::vector<std::uint32_t> > lists_;       // rebuild_lists()'s work space
   std::vector<std::vector<float> > weight_lists_;        // rebuild_lists()'s work space
   std::vector<std::size_t> counts_;
