@@ -373,6 +373,8 @@ def run_model(model, args, tools, avail, out_dir, selected, deadline):
             row["share_under_10"] = a["smallest_dihedral_angle"]["share_under_10"]
             row["share_under_10_unexplained"] = a["smallest_dihedral_angle"].get(
                 "share_under_10_not_at_small_surface_angle")
+            row["share_under_10_at_sharp_contact"] = a["smallest_dihedral_angle"].get(
+                "share_under_10_at_sharp_contact")
             row["mean_smallest_dihedral"] = a["smallest_dihedral_angle"]["mean"]
             row["aspect_ratio_median"] = a["aspect_ratio"]["median"]
             if region_volumes:
@@ -409,9 +411,17 @@ def fmt(v, spec):
     return "-" if v is None else format(v, spec)
 
 
+def unexplained_cell(r):
+    """share under 10 degrees no surface angle explains, with the part next to a sharp contact"""
+    u, s = r.get("share_under_10_unexplained"), r.get("share_under_10_at_sharp_contact")
+    if u is None:
+        return "-"
+    return "%.2f" % (100.0 * u) + ("" if s is None else " (%.2f)" % (100.0 * s))
+
+
 def markdown_table(rows):
     head = ("| model | mesher | tets | vertices | CPU (s) | wall (s) | peak memory (MiB) | min dihedral | % under 10 deg "
-            "| % under 10 deg, no surface angle under 10 | mean smallest dihedral | AR median "
+            "| % under 10 deg, no surface angle under 10 (of them next to a sharp contact) | mean smallest dihedral | AR median "
             "| input triangles kept whole | region volume error | error |")
     lines = [head, "|" + "---|" * 15]
     for r in rows:
@@ -424,7 +434,7 @@ def markdown_table(rows):
             r["model"], r["mesher"], fmt(r["tets"], "d"), fmt(r["vertices"], "d"), fmt(r.get("cpu_s"), ".2f"),
             fmt(r["time_s"], ".2f"), fmt(r["peak_mib"], ".0f"), fmt(r["min_dihedral"], ".3g"),
             fmt(None if r["share_under_10"] is None else 100.0 * r["share_under_10"], ".2f"),
-            fmt(None if r.get("share_under_10_unexplained") is None else 100.0 * r["share_under_10_unexplained"], ".2f"),
+            unexplained_cell(r),
             fmt(r["mean_smallest_dihedral"], ".2f"), fmt(r["aspect_ratio_median"], ".2f"), kept,
             fmt(r["volume_rel_error"], ".1e"), err))
     return "\n".join(lines) + "\n"

@@ -17,12 +17,14 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -410,6 +412,72 @@ static void test_svg()
   assert(one.str().rfind("</svg>") != std::string::npos);
 }
 
+
+// A sharp contact: region 1 is a wedge between z = 0 and z = t x (5 degrees),
+// x and y in [0, 1], whose edge x = z = 0 no mesher can meet with good tets;
+// region 2 is a box [2, 3] x [0, 1] x [0, t], as thin as the wedge's end, whose
+// edges are right angles: its thin tets are the mesher's. The input triangles
+// are said to be good (angle 60), so that no surface angle explains anything.
+static void test_sharp_contact()
+{
+  const double t = std::tan(5. * pi / 180.);
+  BM::Labeled_tetrahedral_mesh_3 m;
+  // the wedge: a prism with ends (A, C, E) at y = 0 and (B, D, F) at y = 1, in three tets
+  m.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{1., 0., t}}, {{0., 1., 0.}}, {{1., 1., 0.}}, {{1., 1., t}}};
+  const std::size_t A = 0, C = 1, E = 2, B = 3, D = 4, F = 5;
+  m.tetrahedra = {{{A, C, E, F}}, {{A, C, F, D}}, {{A, D, F, B}}};
+  m.regions = {1, 1, 1};
+  // the box: corner k at (2 + (k & 1), (k >> 1) & 1, t ((k >> 2) & 1)), six tets around its diagonal
+  for(int k = 0; k < 8; ++k) m.points.push_back({{2. + (k & 1), double((k >> 1) & 1), t * ((k >> 2) & 1)}});
+  const std::size_t o = 6;
+  for(int a : {1, 2, 4})
+    for(int b : {1, 2, 4})
+      if(a != b)
+      {
+        m.tetrahedra.push_back({{o, o + a, o + a + b, o + 7}});
+        m.regions.push_back(2);
+      }
+  // boundary triangles: the tet faces met once
+  std::map<std::array<std::size_t, 3>, int> faces;
+  for(const auto& tet : m.tetrahedra)
+    for(int f = 0; f < 4; ++f)
+    {
+      std::array<std::size_t, 3> s = {{tet[(f + 1) % 4], tet[(f + 2) % 4], tet[(f + 3) % 4]}};
+      std::sort(s.begin(), s.end());
+      ++faces[s];
+    }
+  for(const auto& f : faces)
+    if(f.second == 1)
+    {
+      m.boundary_triangles.push_back(f.first);
+      m.input_min_angles.push_back(60.);
+    }
+  assert(m.boundary_triangles.size() == 8 + 12);
+
+  const BM::Mesh_quality_report r = BM::compute_mesh_quality(m);
+  const BM::Region_quality &wedge = r.regions[0], &box = r.regions[1];
+  check_near("wedge: share under 10", wedge.share_smallest_dihedral_under[1], 1.);
+  check_near("wedge: share under 10 not at a small surface angle", wedge.share_under_10_not_at_small_surface_angle, 1.);
+  check_near("wedge: share under 10 at a sharp contact", wedge.share_under_10_at_sharp_contact, 1.);
+  assert(box.share_smallest_dihedral_under[1] > 0.);
+  check_near("box: share under 10 not at a small surface angle", box.share_under_10_not_at_small_surface_angle,
+             box.share_smallest_dihedral_under[1]);
+  check_near("box: share under 10 at a sharp contact", box.share_under_10_at_sharp_contact, 0.);
+  check_near("all: share under 10 at a sharp contact", r.all.share_under_10_at_sharp_contact, 3. / 9.);
+  // each worst tet's contact angle: the wedge's 5 degrees (the sum of its tets'
+  // dihedrals at A B), the box's right angle
+  bool seen_wedge = false, seen_box = false;
+  for(const BM::Worst_tetrahedron& w : r.worst_tetrahedra)
+  {
+    if(w.region == 1) { check_near("wedge tet's contact angle", w.contact_min_angle, 5., 1e-9); seen_wedge = true; }
+    if(w.region == 2) { check_near("box tet's contact angle", w.contact_min_angle, 90., 1e-9); seen_box = true; }
+  }
+  assert(seen_wedge && seen_box);
+  std::ostringstream text;
+  BM::IO::write_quality_report_text(text, r);
+  assert(text.str().find("next to a sharp contact") != std::string::npos);
+}
+
 int main()
 {
   std::cout.precision(10);
@@ -417,6 +485,7 @@ int main()
   test_sliver();
   test_right_corner();
   test_report();
+  test_sharp_contact();
   test_c3t3();
   test_svg();
   std::cout << "test_quality: all checks passed\n";

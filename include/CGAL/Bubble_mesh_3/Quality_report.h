@@ -136,6 +136,13 @@ struct Region_quality
   /// the small dihedrals the input does not explain. NaN when the mesh has no
   /// boundary triangles (nothing known about the surfaces).
   double share_under_10_not_at_small_surface_angle = std::nan("");
+  /// share of tets counted by `share_under_10_not_at_small_surface_angle`
+  /// that have a vertex on a sharp contact of their region: a boundary edge
+  /// where the region's angle between the surfaces (the sum of its tets'
+  /// dihedral angles there, between two boundary triangles) is under 10
+  /// degrees, as at a pinch-out or a layer cut by a surface at a low angle.
+  /// Every tet there is thin whatever the mesher does. NaN as above.
+  double share_under_10_at_sharp_contact = std::nan("");
 
   double min_face_angle = std::nan("");         ///< smallest of the 12 n face angles
   double max_face_angle = std::nan("");         ///< largest of the 12 n face angles
@@ -172,6 +179,10 @@ struct Worst_tetrahedron
   /// smallest surface angle over the boundary triangles that share at least an
   /// edge with it (see `Mesh_quality_report::surface_angle_source`); NaN if it touches none
   double touching_surface_min_angle = std::nan("");
+  /// smallest angle of its region between the surfaces at a boundary edge
+  /// through one of its vertices (see `Region_quality::share_under_10_at_sharp_contact`);
+  /// NaN if no vertex is on a boundary edge
+  double contact_min_angle = std::nan("");
   std::vector<int> touching_patches;            ///< patches of those triangles, sorted, distinct
 };
 

@@ -74,6 +74,13 @@ struct Tetrahedron_quality
   double max_dihedral_angle;  ///< largest of `dihedral_angles`
 };
 
+namespace internal {
+// edge (i,j) of a tetrahedron and its two other vertices (k,l), in the order of
+// `Tetrahedron_quality::dihedral_angles`
+inline constexpr int tetrahedron_edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                                {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+} // namespace internal
+
 /*!
 \ingroup PkgBubbleMesh3Ref
 
@@ -94,9 +101,7 @@ Tetrahedron_quality tetrahedron_quality(const Point& p0, const Point& p1,
   const std::array<P, 4> p = {{to_p(p0), to_p(p1), to_p(p2), to_p(p3)}};
 
   Tetrahedron_quality q;
-  // edge (i,j), the two other vertices (k,l)
-  static const int edge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                                 {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  const auto& edge = internal::tetrahedron_edges;
   double longest_squared = 0.;
   for(int e = 0; e < 6; ++e)
   {
@@ -208,7 +213,7 @@ struct Region_accumulator
   std::vector<double> aspect_ratios;
   double dihedral_sum = 0., smallest_dihedral_sum = 0.;
   std::array<std::size_t, 4> under = {{0, 0, 0, 0}};
-  std::size_t above_10 = 0, above_40 = 0, under_10_unexplained = 0;
+  std::size_t above_10 = 0, above_40 = 0, under_10_unexplained = 0, under_10_at_sharp_contact = 0;
 
   void add(const Tetrahedron_quality& t, bool unexplained_under_10)
   {
@@ -259,6 +264,7 @@ struct Region_accumulator
     above_10 += o.above_10;
     above_40 += o.above_40;
     under_10_unexplained += o.under_10_unexplained;
+    under_10_at_sharp_contact += o.under_10_at_sharp_contact;
   }
 
   Region_quality finish(std::size_t number_of_vertices, bool surfaces_known)
@@ -271,7 +277,11 @@ struct Region_accumulator
       q.mean_dihedral_angle = dihedral_sum / (6. * dn);
       q.mean_smallest_dihedral_angle = smallest_dihedral_sum / dn;
       for(std::size_t k = 0; k < 4; ++k) q.share_smallest_dihedral_under[k] = double(under[k]) / dn;
-      if(surfaces_known) q.share_under_10_not_at_small_surface_angle = double(under_10_unexplained) / dn;
+      if(surfaces_known)
+      {
+        q.share_under_10_not_at_small_surface_angle = double(under_10_unexplained) / dn;
+        q.share_under_10_at_sharp_contact = double(under_10_at_sharp_contact) / dn;
+      }
       q.min_aspect_ratio = *std::min_element(aspect_ratios.begin(), aspect_ratios.end());
       q.max_aspect_ratio = *std::max_element(aspect_ratios.begin(), aspect_ratios.end());
       // median: the middle value, or the mean of the two middle values
@@ -350,6 +360,20 @@ public:
     return r;
   }
 
+  bool is_edge(const Edge& e) const
+  {
+    auto it = std::lower_bound(entries_.begin(), entries_.end(), e,
+                               [](const Entry& a, const Edge& x) { return std::get<0>(a) < x; });
+    return it != entries_.end() && std::get<0>(*it) == e;
+  }
+
+  bool is_face(std::size_t a, std::size_t b, std::size_t c) const
+  {
+    std::array<std::size_t, 3> s = {{a, b, c}};
+    std::sort(s.begin(), s.end());
+    return std::binary_search(faces_.begin(), faces_.end(), s);
+  }
+
   int boundary_faces(const std::array<std::size_t, 4>& tet) const
   {
     int n = 0;
@@ -366,6 +390,113 @@ private:
   typedef std::tuple<Edge, int, double> Entry;
   std::vector<Entry> entries_;
   std::vector<std::array<std::size_t, 3> > faces_;
+};
+
+// The angles of each region between the surfaces at the boundary edges. Around
+// a boundary edge, the tets of a region that follow one another across facets
+// that are not boundary triangles form a sector; its angle is the sum of their
+// dihedral angles at the edge (a pinch-out gives a few degrees, a plane 180).
+// Kept per vertex and region: the smallest angle of the sectors at the
+// boundary edges through the vertex.
+class Contact_sectors
+{
+public:
+  explicit Contact_sectors(const Labeled_tetrahedral_mesh_3& m) : on_boundary_(m.points.size(), false)
+  {
+    for(const std::array<std::size_t, 3>& t : m.boundary_triangles)
+      for(std::size_t v : t) on_boundary_[v] = true;
+  }
+
+  // tet `tet` of `region` with dihedral angle `angle` at its edge (a, b), c
+  // and d its other vertices; only edges on a boundary triangle are kept
+  void add(const Surface_edge_index& surfaces, std::size_t tet, int region, std::size_t a, std::size_t b,
+           std::size_t c, std::size_t d, double angle)
+  {
+    if(!on_boundary_[a] || !on_boundary_[b]) return;
+    const Surface_edge_index::Edge e = Surface_edge_index::edge(a, b);
+    if(!surfaces.is_edge(e)) return;
+    around_.push_back(Around{e, region, c, d, angle, tet});
+  }
+
+  // the sectors, once every tet was added
+  void finish(const Surface_edge_index& surfaces)
+  {
+    std::sort(around_.begin(), around_.end(), [](const Around& x, const Around& y) {
+      return std::make_tuple(x.edge, x.region, x.tet) < std::make_tuple(y.edge, y.region, y.tet);
+    });
+    std::vector<std::size_t> parent;
+    std::vector<double> sum;
+    for(std::size_t first = 0; first < around_.size();)
+    {
+      std::size_t last = first + 1;
+      while(last < around_.size() && around_[last].edge == around_[first].edge &&
+            around_[last].region == around_[first].region)
+        ++last;
+      // tets sharing a facet through the edge that is no boundary triangle are one sector
+      const std::size_t k = last - first;
+      parent.resize(k);
+      for(std::size_t i = 0; i < k; ++i) parent[i] = i;
+      auto find = [&](std::size_t i) {
+        while(parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+      };
+      const Surface_edge_index::Edge& e = around_[first].edge;
+      for(std::size_t i = 0; i < k; ++i)
+        for(std::size_t j = i + 1; j < k; ++j)
+        {
+          const Around &x = around_[first + i], &y = around_[first + j];
+          for(std::size_t v : {x.c, x.d})
+            if((v == y.c || v == y.d) && !surfaces.is_face(e.first, e.second, v)) parent[find(i)] = find(j);
+        }
+      sum.assign(k, 0.);
+      for(std::size_t i = 0; i < k; ++i) sum[find(i)] += around_[first + i].angle;
+      for(std::size_t i = 0; i < k; ++i)
+      {
+        const double a = sum[find(i)];
+        smallest_.push_back(std::make_tuple(e.first, around_[first].region, a));
+        smallest_.push_back(std::make_tuple(e.second, around_[first].region, a));
+      }
+      first = last;
+    }
+    around_.clear();
+    around_.shrink_to_fit();
+    // the smallest per (vertex, region), first after the sort
+    std::sort(smallest_.begin(), smallest_.end());
+    smallest_.erase(std::unique(smallest_.begin(), smallest_.end(),
+                                [](const Entry& x, const Entry& y) {
+                                  return std::get<0>(x) == std::get<0>(y) && std::get<1>(x) == std::get<1>(y);
+                                }),
+                    smallest_.end());
+  }
+
+  // smallest sector angle of `region` at the boundary edges through `v`; NaN if none
+  double smallest_at(std::size_t v, int region) const
+  {
+    auto it = std::lower_bound(smallest_.begin(), smallest_.end(), std::make_tuple(v, region, -1.));
+    return it != smallest_.end() && std::get<0>(*it) == v && std::get<1>(*it) == region ? std::get<2>(*it)
+                                                                                          : std::nan("");
+  }
+
+  double smallest_at(const std::array<std::size_t, 4>& tet, int region) const
+  {
+    double r = std::nan("");
+    for(std::size_t v : tet) r = std::fmin(r, smallest_at(v, region));
+    return r;
+  }
+
+private:
+  struct Around
+  {
+    Surface_edge_index::Edge edge;
+    int region;
+    std::size_t c, d; // the tet's other vertices
+    double angle;     // its dihedral angle at the edge
+    std::size_t tet;
+  };
+  typedef std::tuple<std::size_t, int, double> Entry;
+  std::vector<bool> on_boundary_;
+  std::vector<Around> around_;
+  std::vector<Entry> smallest_;
 };
 
 } // namespace internal
@@ -387,6 +518,10 @@ A tetrahedron "touches" a surface triangle when they share at least an edge
 (a contact sector between two surfaces is bounded by such edges). The surface
 angle of a boundary triangle is `mesh.input_min_angles[i]` when given, else the
 triangle's own smallest angle.
+A tetrahedron under 10 degrees that touches no surface angle under 10 is
+further counted "at a sharp contact" when one of its vertices lies on a
+boundary edge where its region's angle between the surfaces is under 10
+degrees (a pinch-out): see `Region_quality::share_under_10_at_sharp_contact`.
 
 \pre every index of `mesh.tetrahedra` and `mesh.boundary_triangles` is smaller than `mesh.points.size()`,
 `mesh.regions.size() == mesh.tetrahedra.size()`
@@ -442,6 +577,8 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
 
   const internal::Surface_edge_index surfaces(mesh);
   const bool surfaces_known = !surfaces.empty();
+  internal::Contact_sectors sectors(mesh);
+  std::vector<std::size_t> unexplained_under_10; // by the surface angles
 
   std::map<int, internal::Region_accumulator> per_region;
   // what the worst-tet list needs of each tet, kept small for meshes of millions
@@ -459,9 +596,21 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
     {
       const double a = surfaces.touching_min_angle(t);
       unexplained = !(a < 10.); // NaN (touches nothing) counts as unexplained
+      if(unexplained) unexplained_under_10.push_back(i);
     }
     per_region[mesh.regions[i]].add(q, unexplained);
+    if(surfaces_known)
+    {
+      const auto& edge = internal::tetrahedron_edges;
+      for(int e = 0; e < 6; ++e)
+        sectors.add(surfaces, i, mesh.regions[i], t[edge[e][0]], t[edge[e][1]], t[edge[e][2]], t[edge[e][3]],
+                    q.dihedral_angles[e]);
+    }
   }
+  sectors.finish(surfaces);
+  for(std::size_t i : unexplained_under_10)
+    if(sectors.smallest_at(mesh.tetrahedra[i], mesh.regions[i]) < 10.)
+      ++per_region[mesh.regions[i]].under_10_at_sharp_contact;
 
   // distinct vertices: tets grouped by region, a stamp per point
   std::map<int, std::size_t> slot;
@@ -523,6 +672,7 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
     w.volume = tq[i].volume;
     w.boundary_faces = surfaces.boundary_faces(t);
     w.touching_surface_min_angle = surfaces.touching_min_angle(t, &w.touching_patches);
+    w.contact_min_angle = sectors.smallest_at(t, w.region);
     r.worst_tetrahedra.push_back(w);
   }
   return r;

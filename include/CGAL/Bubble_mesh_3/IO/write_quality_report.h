@@ -95,7 +95,8 @@ inline void write_region_json(std::ostream& os, const Region_quality& q, const s
      << ", \"share_under_15\": " << json_number(q.share_smallest_dihedral_under[2])
      << ", \"share_under_20\": " << json_number(q.share_smallest_dihedral_under[3])
      << ", \"share_under_10_not_at_small_surface_angle\": "
-     << json_number(q.share_under_10_not_at_small_surface_angle) << "},\n"
+     << json_number(q.share_under_10_not_at_small_surface_angle)
+     << ", \"share_under_10_at_sharp_contact\": " << json_number(q.share_under_10_at_sharp_contact) << "},\n"
      << in << "\"face_angle\": {\"min\": " << json_number(q.min_face_angle)
      << ", \"max\": " << json_number(q.max_face_angle) << "},\n"
      << in << "\"aspect_ratio\": {\"min\": " << json_number(q.min_aspect_ratio)
@@ -151,6 +152,7 @@ inline void write_report_json(std::ostream& os, const Mesh_quality_report& r, co
        << ", \"volume\": " << json_number(w.volume)
        << ", \"boundary_faces\": " << w.boundary_faces
        << ", \"touching_surface_min_angle\": " << json_number(w.touching_surface_min_angle)
+       << ", \"contact_min_angle\": " << json_number(w.contact_min_angle)
        << ", \"touching_patches\": "
        << json_array(w.touching_patches, [](int p) { return std::to_string(p); }) << "}";
   }
@@ -268,15 +270,19 @@ inline void write_quality_report_text(std::ostream& os, const Mesh_quality_repor
     os << "  degenerate (flat) tetrahedra: " << report.all.number_of_degenerate_tetrahedra << "\n";
   if(!std::isnan(report.all.share_under_10_not_at_small_surface_angle))
     os << "  tets under 10 degrees not against a surface angle under 10 (" << report.surface_angle_source
-       << "): " << percent(report.all.share_under_10_not_at_small_surface_angle) << " %\n";
+       << "): " << percent(report.all.share_under_10_not_at_small_surface_angle)
+       << " %\n  of them next to a sharp contact (surfaces meeting at under 10 degrees in their region, as at a"
+          " pinch-out): "
+       << percent(report.all.share_under_10_at_sharp_contact) << " %\n";
 
   if(!report.worst_tetrahedra.empty())
   {
     os << "\n  worst tetrahedra; bfaces = faces on a surface, surfang = smallest angle of the surface\n"
-       << "  triangles sharing an edge with the tet (angles of the " << report.surface_angle_source << ")\n"
+       << "  triangles sharing an edge with the tet (angles of the " << report.surface_angle_source << "),\n"
+       << "  contact = smallest angle of its region between surfaces at a boundary edge through a vertex\n"
        << "  " << std::right << std::setw(9) << "tet" << std::setw(8) << "region" << std::setw(9)
        << "mindih" << std::setw(9) << "maxdih" << std::setw(10) << "AR" << std::setw(8) << "bfaces"
-       << std::setw(9) << "surfang" << "  centroid\n";
+       << std::setw(9) << "surfang" << std::setw(9) << "contact" << "  centroid\n";
     for(const Worst_tetrahedron& w : report.worst_tetrahedra)
     {
       std::ostringstream c;
@@ -284,7 +290,8 @@ inline void write_quality_report_text(std::ostream& os, const Mesh_quality_repor
       os << "  " << std::setw(9) << w.index << std::setw(8) << w.region << std::setw(9)
          << cell(w.min_dihedral_angle, 3) << std::setw(9) << cell(w.max_dihedral_angle, 2) << std::setw(10)
          << cell(w.aspect_ratio, 2) << std::setw(8) << w.boundary_faces << std::setw(9)
-         << cell(w.touching_surface_min_angle, 2) << "  " << c.str() << "\n";
+         << cell(w.touching_surface_min_angle, 2) << std::setw(9) << cell(w.contact_min_angle, 2) << "  "
+         << c.str() << "\n";
     }
     os << std::left;
   }
@@ -339,6 +346,9 @@ inline void write_quality_comparison_text(std::ostream& os, const std::vector<Me
   }
   row("% < 10 not at surface angle < 10", [](const Mesh_quality_report& r) {
     return percent(r.all.share_under_10_not_at_small_surface_angle);
+  });
+  row("  of them at a sharp contact", [](const Mesh_quality_report& r) {
+    return percent(r.all.share_under_10_at_sharp_contact);
   });
   row("min face angle", [](const Mesh_quality_report& r) { return cell(r.all.min_face_angle, 3); });
   row("max face angle", [](const Mesh_quality_report& r) { return cell(r.all.max_face_angle, 3); });
