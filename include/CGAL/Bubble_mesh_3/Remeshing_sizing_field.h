@@ -234,7 +234,9 @@ public:
     source_points_.push_back(p);
     source_sizes_.push_back(h);
     min_source_ = (std::min)(min_source_, h);
-    levels_.clear();
+    // constraints come one by one between queries (the curves' short spans):
+    // the searches are rebuilt only once many wait, the others are read one by one
+    if(source_points_.size() - searched_ > max_unsearched) levels_.clear();
   }
 
 private:
@@ -587,6 +589,7 @@ private:
     slope_ = o.slope_; min_source_ = o.min_source_; smallest_thickness_ = o.smallest_thickness_;
     patch_size_ = o.patch_size_; source_points_ = o.source_points_; source_sizes_ = o.source_sizes_;
     levels_.clear(); // rebuilt on demand
+    searched_ = 0;
   }
 
   // Sources are grouped in levels of sizes within a factor 2, each with its
@@ -595,6 +598,7 @@ private:
   void build_tree() const
   {
     if(!levels_.empty() || source_points_.empty()) return;
+    searched_ = source_points_.size();
     std::vector<std::size_t> order(source_points_.size());
     for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
@@ -627,6 +631,9 @@ private:
     if(source_points_.empty() || !(min_source_ < cap)) return cap;
     build_tree();
     double best = cap;
+    for(std::size_t i = searched_; i < source_points_.size(); ++i)
+      best = (std::min)(best, source_sizes_[i] + slope_ * std::sqrt(CGAL::to_double(
+                                                        CGAL::squared_distance(p, source_points_[i]))));
     std::vector<std::size_t>& near = scratch_;
     for(const std::shared_ptr<Level>& level : levels_)
     {
@@ -667,6 +674,9 @@ private:
   std::vector<Point_3> source_points_;
   std::vector<double> source_sizes_;
   mutable std::vector<std::shared_ptr<Level> > levels_;
+  // sources [0, searched_) are in `levels_`, the others are read one by one
+  mutable std::size_t searched_ = 0;
+  static constexpr std::size_t max_unsearched = 256;
   mutable std::vector<std::size_t> scratch_;
 };
 
