@@ -452,11 +452,15 @@ void test_in_memory(BM::Surface_remeshing_method method)
   assert(std::abs(free_length - 10.4) < 1e-9);
   for(const Point& corner : {Point(5, 2, 2.3), Point(5, 6, 2.3), Point(5, 6, 3.5), Point(5, 2, 3.5)})
     assert(std::find(output.points().begin(), output.points().end(), corner) != output.points().end());
-  // deterministic
-  Model again;
+  // deterministic, and the same on one thread as on several
+  Model again, sequential;
   BM::remesh_surfaces(input, again, np);
   assert(again.points() == output.points());
   assert(again.triangles() == output.triangles());
+  BM::remesh_surfaces<CGAL::Sequential_tag>(input, sequential, np);
+  assert(sequential.points() == output.points());
+  assert(sequential.triangles() == output.triangles());
+  std::cout << "    same output with CGAL::Sequential_tag (" << r.number_of_charts << " charts)\n";
 }
 
 // A patch that covers part of its plane twice (the horizon of

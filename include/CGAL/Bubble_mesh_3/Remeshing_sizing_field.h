@@ -32,6 +32,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -68,7 +69,8 @@ above are sampled at points) bounds the field by
 neighbouring edges differ by a ratio of at most about \f$ g \f$. Patch sizes
 are graded across the curves between patches the same way.
 
-Queries are not thread-safe (the point search is built lazily).
+Queries may run concurrently (the point search is built on the first one,
+under a lock); adding a constraint may not run concurrently with anything.
 
 \tparam GeomTraits a model of `Kernel`
 */
@@ -597,6 +599,7 @@ private:
   // distance cannot beat the best value so far is left at once.
   void build_tree() const
   {
+    std::lock_guard<std::mutex> lock(build_mutex_);
     if(!levels_.empty() || source_points_.empty()) return;
     searched_ = source_points_.size();
     std::vector<std::size_t> order(source_points_.size());
@@ -634,7 +637,7 @@ private:
     for(std::size_t i = searched_; i < source_points_.size(); ++i)
       best = (std::min)(best, source_sizes_[i] + slope_ * std::sqrt(CGAL::to_double(
                                                         CGAL::squared_distance(p, source_points_[i]))));
-    std::vector<std::size_t>& near = scratch_;
+    thread_local std::vector<std::size_t> near;
     for(const std::shared_ptr<Level>& level : levels_)
     {
       if(!(level->min_size < best)) break;
@@ -677,7 +680,7 @@ private:
   // sources [0, searched_) are in `levels_`, the others are read one by one
   mutable std::size_t searched_ = 0;
   static constexpr std::size_t max_unsearched = 256;
-  mutable std::vector<std::size_t> scratch_;
+  mutable std::mutex build_mutex_;
 };
 
 } // namespace Bubble_mesh_3

@@ -11,6 +11,7 @@
 #include <CGAL/Bubble_mesh_3/internal/Neighbor_grid.h>
 #include <CGAL/Bubble_mesh_3/internal/confine_to_region.h>
 #include <CGAL/Bubble_mesh_3/internal/dynamics_parameters.h>
+#include <CGAL/Bubble_mesh_3/internal/parallel_loops.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>
@@ -50,31 +51,7 @@ namespace internal {
 
 // ---- deterministic parallel loops -------------------------------------------
 
-template <class ConcurrencyTag>
-struct Runs_in_parallel
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  static constexpr bool value = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
-#else
-  static constexpr bool value = false;
-#endif
-};
-
-// f(begin, end) over [0, n); the split does not matter to callers that write per index
-template <class ConcurrencyTag, class F>
-void for_each_block(std::size_t n, std::size_t grain, const F& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(Runs_in_parallel<ConcurrencyTag>::value && n > grain)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
-                      [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
-    return;
-  }
-#endif
-  CGAL_USE(grain);
-  if(n > 0) f(std::size_t(0), n);
-}
+// (Runs_in_parallel and for_each_block: internal/parallel_loops.h)
 
 // fixed blocks whatever the thread count: partial results are combined in block order
 constexpr std::size_t reduction_block = 2048;

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <map>
@@ -407,22 +408,25 @@ public:
       for(std::size_t v : t) on_boundary_[v] = true;
   }
 
-  // tet `tet` of `region` with dihedral angle `angle` at its edge (a, b), c
-  // and d its other vertices; only edges on a boundary triangle are kept
-  void add(const Surface_edge_index& surfaces, std::size_t tet, int region, std::size_t a, std::size_t b,
-           std::size_t c, std::size_t d, double angle)
+  // a tet of `region` with dihedral angle `angle` at its edge (a, b), c and d
+  // its other vertices, tets added in a fixed order (the sums follow it); only
+  // edges on a boundary triangle are kept
+  void add(const Surface_edge_index& surfaces, int region, std::size_t a, std::size_t b, std::size_t c,
+           std::size_t d, double angle)
   {
     if(!on_boundary_[a] || !on_boundary_[b]) return;
     const Surface_edge_index::Edge e = Surface_edge_index::edge(a, b);
     if(!surfaces.is_edge(e)) return;
-    around_.push_back(Around{e, region, c, d, angle, tet});
+    CGAL_precondition(on_boundary_.size() <= (std::numeric_limits<std::uint32_t>::max)());
+    around_.push_back(Around{{{std::uint32_t(e.first), std::uint32_t(e.second)}}, std::uint32_t(c), std::uint32_t(d),
+                             region, angle});
   }
 
   // the sectors, once every tet was added
   void finish(const Surface_edge_index& surfaces)
   {
-    std::sort(around_.begin(), around_.end(), [](const Around& x, const Around& y) {
-      return std::make_tuple(x.edge, x.region, x.tet) < std::make_tuple(y.edge, y.region, y.tet);
+    std::stable_sort(around_.begin(), around_.end(), [](const Around& x, const Around& y) {
+      return std::make_pair(x.edge, x.region) < std::make_pair(y.edge, y.region);
     });
     std::vector<std::size_t> parent;
     std::vector<double> sum;
@@ -440,22 +444,19 @@ public:
         while(parent[i] != i) i = parent[i] = parent[parent[i]];
         return i;
       };
-      const Surface_edge_index::Edge& e = around_[first].edge;
+      const std::array<std::uint32_t, 2>& e = around_[first].edge;
       for(std::size_t i = 0; i < k; ++i)
         for(std::size_t j = i + 1; j < k; ++j)
         {
           const Around &x = around_[first + i], &y = around_[first + j];
           for(std::size_t v : {x.c, x.d})
-            if((v == y.c || v == y.d) && !surfaces.is_face(e.first, e.second, v)) parent[find(i)] = find(j);
+            if((v == y.c || v == y.d) && !surfaces.is_face(e[0], e[1], v)) parent[find(i)] = find(j);
         }
       sum.assign(k, 0.);
       for(std::size_t i = 0; i < k; ++i) sum[find(i)] += around_[first + i].angle;
       for(std::size_t i = 0; i < k; ++i)
-      {
-        const double a = sum[find(i)];
-        smallest_.push_back(std::make_tuple(e.first, around_[first].region, a));
-        smallest_.push_back(std::make_tuple(e.second, around_[first].region, a));
-      }
+        if(find(i) == i) // once per sector
+          for(std::size_t v : e) smallest_.push_back(std::make_tuple(v, around_[first].region, sum[i]));
       first = last;
     }
     around_.clear();
@@ -487,11 +488,10 @@ public:
 private:
   struct Around
   {
-    Surface_edge_index::Edge edge;
+    std::array<std::uint32_t, 2> edge; // sorted
+    std::uint32_t c, d;                // the tet's other vertices
     int region;
-    std::size_t c, d; // the tet's other vertices
-    double angle;     // its dihedral angle at the edge
-    std::size_t tet;
+    double angle;                      // its dihedral angle at the edge
   };
   typedef std::tuple<std::size_t, int, double> Entry;
   std::vector<bool> on_boundary_;
@@ -603,7 +603,7 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
     {
       const auto& edge = internal::tetrahedron_edges;
       for(int e = 0; e < 6; ++e)
-        sectors.add(surfaces, i, mesh.regions[i], t[edge[e][0]], t[edge[e][1]], t[edge[e][2]], t[edge[e][3]],
+        sectors.add(surfaces, mesh.regions[i], t[edge[e][0]], t[edge[e][1]], t[edge[e][2]], t[edge[e][3]],
                     q.dihedral_angles[e]);
     }
   }

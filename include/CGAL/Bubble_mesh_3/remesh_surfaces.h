@@ -15,6 +15,7 @@
 #include <CGAL/Bubble_mesh_3/internal/remesh_mesh_improvement.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_patch_isotropic.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_triangle_tree.h>
+#include <CGAL/Bubble_mesh_3/internal/parallel_loops.h>
 #include <CGAL/Bubble_mesh_3/internal/remeshing_parameters.h>
 #include <CGAL/Bubble_mesh_3/internal/resample_curves.h>
 
@@ -125,6 +126,7 @@ public:
     std::size_t relaxation_steps = 40;
     std::size_t population_rounds = 3;
     bool verbose = false;
+    bool parallel = false; // charts triangulated on several threads
   };
 
   Surface_remesher(const Model& input, const Model_features& features, Remeshing_sizing_field<GeomTraits>& sizing,
@@ -445,10 +447,21 @@ private:
     param.relaxation_steps = set_.relaxation_steps;
     param.population_rounds = set_.population_rounds;
     param.bubbles = (set_.method == Surface_remeshing_method::BUBBLES);
-    for(std::size_t c = 0; c < charts_.size(); ++c)
+    // The charts are triangulated independently (their boundaries, the
+    // resampled lines, are fixed), in parallel if asked; the results are
+    // appended in chart order, so the output does not depend on the threads.
+    struct Chart_result
     {
+      bool failed = false;
+      std::vector<std::size_t> ids;  // output indices of the chart's line points
+      std::vector<Point_3> points;   // those points, then the new ones
+      std::vector<std::array<std::size_t, 3> > triangles; // local indices
+    };
+    std::vector<Chart_result> results(charts_.size());
+    auto triangulate = [&](std::size_t c) {
+      Chart_result& result = results[c];
       // local numbering: the chart's line points in increasing output order
-      std::vector<std::size_t> ids;
+      std::vector<std::size_t>& ids = result.ids;
       for(const auto& s : chart_segments[c])
       {
         ids.push_back(s[0]);
@@ -470,21 +483,38 @@ private:
                                                      param);
       if(pts.size() < 3 || !tri.set_boundary(pts, segs))
       {
+        result.failed = true;
+        return;
+      }
+      tri.run();
+      result.points = tri.points();
+      result.triangles.assign(tri.triangles().begin(), tri.triangles().end());
+    };
+    auto each = [&](std::size_t first, std::size_t last) {
+      for(std::size_t c = first; c < last; ++c) triangulate(c);
+    };
+    if(set_.parallel) for_each_block<CGAL::Parallel_tag>(charts_.size(), 1, each);
+    else each(0, charts_.size());
+    for(std::size_t c = 0; c < charts_.size(); ++c)
+    {
+      Chart_result& result = results[c];
+      if(result.failed)
+      {
         failed.push_back(c);
         continue;
       }
-      tri.run();
-      const std::vector<Point_3>& all = tri.points();
-      std::vector<std::size_t> global(all.size());
+      const std::vector<std::size_t>& ids = result.ids;
+      std::vector<std::size_t> global(result.points.size());
       for(std::size_t i = 0; i < ids.size(); ++i) global[i] = ids[i];
-      for(std::size_t i = ids.size(); i < all.size(); ++i)
+      for(std::size_t i = ids.size(); i < result.points.size(); ++i)
       {
-        out_points_.push_back(all[i]);
+        out_points_.push_back(result.points[i]);
         out_fixed_.push_back(0);
         global[i] = out_points_.size() - 1;
       }
-      for(const auto& t : tri.triangles())
+      for(const auto& t : result.triangles)
         patch_out_[charts_[c].patch].push_back(Triangle{{global[t[0]], global[t[1]], global[t[2]]}});
+      result = Chart_result();
     }
     report_.number_of_charts = charts_.size();
   }
@@ -834,6 +864,12 @@ graded size in CGAL 5.5 (one target per patch), so the fine curve spacing
 near short input curve segments leaves more small angles and off-size
 edges (see the manual for the table).
 
+The charts are triangulated on several threads with `CGAL::Parallel_tag`;
+the output is the same whatever the number of threads.
+
+\tparam ConcurrencyTag `CGAL::Parallel_tag` (default when TBB is linked) or `CGAL::Sequential_tag`.
+\tparam GeomTraits a model of `Kernel`.
+
 \param input a geological model that `validate_geological_model()` accepts
 \param output receives the re-meshed model (cleared first)
 \param np an optional sequence of named parameters among the ones listed
@@ -891,7 +927,7 @@ below and those of `Remeshing_sizing_field` and `detect_model_features()`
 the target, distances of points, triangles and curves to the input, region
 volumes before and after, times.
 */
-template <class GeomTraits, class CGAL_NP_TEMPLATE_PARAMETERS>
+template <class ConcurrencyTag = CGAL::Parallel_if_available_tag, class GeomTraits, class CGAL_NP_TEMPLATE_PARAMETERS>
 Surface_remeshing_report remesh_surfaces(const Geological_model_3<GeomTraits>& input,
                                          Geological_model_3<GeomTraits>& output,
                                          const CGAL_NP_CLASS& np = parameters::default_values())
@@ -914,6 +950,7 @@ Surface_remeshing_report remesh_surfaces(const Geological_model_3<GeomTraits>& i
   settings.population_rounds =
     choose_parameter(get_parameter(np, internal_np::number_of_population_steps), std::size_t(3));
   settings.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  settings.parallel = internal::Runs_in_parallel<ConcurrencyTag>::value;
   report.method = settings.method;
   report.angle_bound = settings.angle_bound;
   report.surface_distance = settings.surface_distance;
