@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/Quality_report.h>
 
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
+#include <CGAL/Bubble_mesh_3/internal/union_find.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
@@ -345,9 +346,7 @@ public:
       for(int j = i + 1; j < 4; ++j)
       {
         const Edge e = edge(tet[i], tet[j]);
-        auto it = std::lower_bound(entries_.begin(), entries_.end(), e,
-                                   [](const Entry& a, const Edge& x) { return std::get<0>(a) < x; });
-        for(; it != entries_.end() && std::get<0>(*it) == e; ++it)
+        for(auto it = first_entry(e); it != entries_.end() && std::get<0>(*it) == e; ++it)
         {
           r = std::fmin(r, std::get<2>(*it));
           if(patches) patches->push_back(std::get<1>(*it));
@@ -363,8 +362,7 @@ public:
 
   bool is_edge(const Edge& e) const
   {
-    auto it = std::lower_bound(entries_.begin(), entries_.end(), e,
-                               [](const Entry& a, const Edge& x) { return std::get<0>(a) < x; });
+    const auto it = first_entry(e);
     return it != entries_.end() && std::get<0>(*it) == e;
   }
 
@@ -389,6 +387,14 @@ public:
 
 private:
   typedef std::tuple<Edge, int, double> Entry;
+
+  // the first entry of edge `e`, or the one after where it would be
+  typename std::vector<Entry>::const_iterator first_entry(const Edge& e) const
+  {
+    return std::lower_bound(entries_.begin(), entries_.end(), e,
+                            [](const Entry& a, const Edge& x) { return std::get<0>(a) < x; });
+  }
+
   std::vector<Entry> entries_;
   std::vector<std::array<std::size_t, 3> > faces_;
 };
@@ -404,6 +410,7 @@ class Contact_sectors
 public:
   explicit Contact_sectors(const Labeled_tetrahedral_mesh_3& m) : on_boundary_(m.points.size(), false)
   {
+    CGAL_precondition(m.points.size() <= (std::numeric_limits<std::uint32_t>::max)());
     for(const std::array<std::size_t, 3>& t : m.boundary_triangles)
       for(std::size_t v : t) on_boundary_[v] = true;
   }
@@ -417,7 +424,6 @@ public:
     if(!on_boundary_[a] || !on_boundary_[b]) return;
     const Surface_edge_index::Edge e = Surface_edge_index::edge(a, b);
     if(!surfaces.is_edge(e)) return;
-    CGAL_precondition(on_boundary_.size() <= (std::numeric_limits<std::uint32_t>::max)());
     around_.push_back(Around{{{std::uint32_t(e.first), std::uint32_t(e.second)}}, std::uint32_t(c), std::uint32_t(d),
                              region, angle});
   }
@@ -428,7 +434,6 @@ public:
     std::stable_sort(around_.begin(), around_.end(), [](const Around& x, const Around& y) {
       return std::make_pair(x.edge, x.region) < std::make_pair(y.edge, y.region);
     });
-    std::vector<std::size_t> parent;
     std::vector<double> sum;
     for(std::size_t first = 0; first < around_.size();)
     {
@@ -438,24 +443,19 @@ public:
         ++last;
       // tets sharing a facet through the edge that is no boundary triangle are one sector
       const std::size_t k = last - first;
-      parent.resize(k);
-      for(std::size_t i = 0; i < k; ++i) parent[i] = i;
-      auto find = [&](std::size_t i) {
-        while(parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-      };
+      std::vector<std::size_t> parent = uf_singletons(k);
       const std::array<std::uint32_t, 2>& e = around_[first].edge;
       for(std::size_t i = 0; i < k; ++i)
         for(std::size_t j = i + 1; j < k; ++j)
         {
           const Around &x = around_[first + i], &y = around_[first + j];
           for(std::size_t v : {x.c, x.d})
-            if((v == y.c || v == y.d) && !surfaces.is_face(e[0], e[1], v)) parent[find(i)] = find(j);
+            if((v == y.c || v == y.d) && !surfaces.is_face(e[0], e[1], v)) uf_union(parent, i, j);
         }
       sum.assign(k, 0.);
-      for(std::size_t i = 0; i < k; ++i) sum[find(i)] += around_[first + i].angle;
+      for(std::size_t i = 0; i < k; ++i) sum[uf_find(parent, i)] += around_[first + i].angle;
       for(std::size_t i = 0; i < k; ++i)
-        if(find(i) == i) // once per sector
+        if(parent[i] == i) // once per sector
           for(std::size_t v : e) smallest_.push_back(std::make_tuple(v, around_[first].region, sum[i]));
       first = last;
     }
