@@ -416,6 +416,87 @@ void test_summary()
          contains(text2.str(), "(patch 'Fault')") && contains(text2.str(), "--remesh-surfaces"));
 }
 
+// A wedge of `degrees` between two patches meeting along the y axis (a layer pinching
+// out), closed by a wall and two ends; with `one_patch` both faces are one surface that
+// folds back.
+Model pinch_out(double degrees, bool one_patch)
+{
+  Model m;
+  const std::size_t r = m.add_region("Wedge");
+  const std::size_t lower = m.add_patch("Lower", 0, r);
+  const std::size_t upper = one_patch ? lower : m.add_patch("Upper", 0, r);
+  const std::size_t wall = m.add_patch("Wall", 0, r);
+  const double a = degrees * 3.14159265358979323846 / 180., c = std::cos(a), sn = std::sin(a);
+  const std::size_t A0 = m.add_point(Point(0, 0, 0)), A1 = m.add_point(Point(0, 1, 0));
+  const std::size_t B0 = m.add_point(Point(1, 0, 0)), B1 = m.add_point(Point(1, 1, 0));
+  const std::size_t C0 = m.add_point(Point(c, 0, sn)), C1 = m.add_point(Point(c, 1, sn));
+  // normals outward
+  m.add_triangle(A0, A1, B1, lower);
+  m.add_triangle(A0, B1, B0, lower);
+  m.add_triangle(A0, C0, C1, upper);
+  m.add_triangle(A0, C1, A1, upper);
+  m.add_triangle(B0, B1, C1, wall);
+  m.add_triangle(B0, C1, C0, wall);
+  m.add_triangle(A0, B0, C0, wall);
+  m.add_triangle(A1, C1, B1, wall);
+  return m;
+}
+
+// The region's angle between its surfaces at an edge: 90 at a box's edges, the
+// wedge's angle at a pinch-out, with a warning that names the place and the patches.
+void test_contact_angles()
+{
+  const BM::Geological_model_summary cube = BM::summarize_geological_model(unit_cube());
+  assert(std::abs(cube.regions.at(0).min_contact_angle - 90.) < 1e-9);
+  assert(cube.regions.at(0).number_of_sharp_contact_edges == 0);
+  // the fault meets the horizon at 90 degrees; its free edges (its tip) have the whole turn
+  const BM::Geological_model_summary layers = BM::summarize_geological_model(two_layers_with_fault());
+  for(const auto& r : layers.regions)
+    assert(std::abs(r.min_contact_angle - 90.) < 1e-9 && r.number_of_sharp_contact_edges == 0);
+  assert(cube.sharp_patch_corners.empty() && layers.sharp_patch_corners.empty());
+  std::ostringstream quiet;
+  BM::write_summary_text(quiet, layers);
+  assert(!contains(quiet.str(), "surfaces meet") && !contains(quiet.str(), "border curves"));
+
+  for(bool one_patch : {false, true})
+  {
+    const Model m = pinch_out(5., one_patch);
+    assert(validation_message(m).empty());
+    const BM::Geological_model_summary s = BM::summarize_geological_model(m);
+    const auto& r = s.regions.at(0);
+    assert(r.volume > 0.); // (the normals point out)
+    std::ostringstream text;
+    BM::write_summary_text(text, s);
+    std::cout << text.str();
+    assert(std::abs(r.min_contact_angle - 5.) < 1e-9);
+    assert(r.number_of_sharp_contact_edges == 1 && std::abs(r.sharp_contact_length - 1.) < 1e-15);
+    assert(r.min_contact_point[0] == 0. && r.min_contact_point[1] == 0.5 && r.min_contact_point[2] == 0.);
+    const std::size_t lo = (std::min)(r.min_contact_patches.first, r.min_contact_patches.second);
+    const std::size_t hi = (std::max)(r.min_contact_patches.first, r.min_contact_patches.second);
+    assert(lo == 0 && hi == (one_patch ? 0u : 1u));
+    assert(contains(text.str(), "warning: region 1 'Wedge': its surfaces meet at 5 deg at (0, 0.5, 0)"));
+    assert(contains(text.str(), one_patch ? "where patch 'Lower' folds back" : "between patches"));
+    // the wall meets the faces at the wedge's base angles, 87.5 degrees, the ends at 90
+    const BM::Geological_model_summary wide =
+      BM::summarize_geological_model(m, BM::parameters::sharp_angle_bound(88.));
+    assert(wide.regions.at(0).number_of_sharp_contact_edges == 3);
+    std::ostringstream json;
+    BM::write_summary_json(json, s);
+    assert(contains(json.str(), "\"number_of_sharp_contact_edges\": 1") && contains(json.str(), "\"sharp_angle_bound\": 10"));
+    // the wedge's ends are triangles of the patch 'Wall' with the wedge's angle at the pinch-out line
+    assert(s.sharp_patch_corners.size() == 1 && s.sharp_patch_corners[0].name == "Wall");
+    assert(std::abs(s.sharp_patch_corners[0].angle - 5.) < 1e-9 && s.sharp_patch_corners[0].number_of_sharp_corners == 2);
+    assert(s.sharp_patch_corners[0].point[0] == 0. && s.sharp_patch_corners[0].point[2] == 0.);
+    const auto& both = s.sharp_patch_corners[0].corners; // A0 and A1, in point order
+    assert(both.size() == 2 && both[0][1] == 0. && both[1][1] == 1. && std::abs(both[1][3] - 5.) < 1e-9);
+    assert(contains(text.str(), "warning: 1 patch has 2 corners under 10 deg") &&
+           contains(text.str(), "sharpest: patch 'Wall' 5 deg at (0, "));
+    assert(contains(json.str(), std::string("\"sharp_patch_corners\": [\n    {\"patch\": ") + (one_patch ? "1" : "2") +
+                                  ", \"name\": \"Wall\""));
+  }
+  std::cout << "contact angles: box 90, fault on a horizon 90, pinch-out 5 (warned); patch corners: the wedge's ends 5\n";
+}
+
 // A layered box with a fine grid: validation must stay fast.
 void test_timing()
 {
@@ -483,6 +564,7 @@ int main()
   test_triangle_pairs();
   test_bad_files();
   test_summary();
+  test_contact_angles();
   test_timing();
   test_real_models();
   std::cout << "test_validation: OK\n";

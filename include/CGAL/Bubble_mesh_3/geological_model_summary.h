@@ -8,6 +8,7 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
+#include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Named_function_parameters.h>
@@ -28,24 +29,18 @@ namespace Bubble_mesh_3 {
 
 namespace internal_np {
 enum poor_angle_bound_t { poor_angle_bound };
+enum sharp_angle_bound_t { sharp_angle_bound };
 } // namespace internal_np
 
 namespace parameters {
 
 /// \ingroup PkgBubbleMesh3Ref
 /// the input triangle angle (degrees) under which the summary warns
-inline Named_function_parameters<double, internal_np::poor_angle_bound_t> poor_angle_bound(double degrees)
-{
-  return Named_function_parameters<double, internal_np::poor_angle_bound_t>(degrees);
-}
-
-template <class T, class Tag, class Base>
-Named_function_parameters<double, internal_np::poor_angle_bound_t, Named_function_parameters<T, Tag, Base> >
-poor_angle_bound(double degrees, const Named_function_parameters<T, Tag, Base>& np)
-{
-  return Named_function_parameters<double, internal_np::poor_angle_bound_t, Named_function_parameters<T, Tag, Base> >(
-      degrees, np);
-}
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, poor_angle_bound)
+/// \ingroup PkgBubbleMesh3Ref
+/// the angle (degrees) of a region between two of its surfaces at an edge, or of a patch
+/// between two of its border curves at a point, under which the summary warns
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, sharp_angle_bound)
 
 } // namespace parameters
 
@@ -78,6 +73,18 @@ struct Geological_model_summary
     double min_angle = 0.;
     /// the triangle where it occurs
     std::size_t min_angle_triangle = 0;
+    /// the region's smallest angle between two of its triangles at an edge (degrees; see
+    /// `region_contact_angles()`): under about 10, a pinch-out, a low-angle contact or a fold
+    double min_contact_angle = 0.;
+    /// the midpoint of that edge
+    std::array<double, 3> min_contact_point{{0., 0., 0.}};
+    /// the patches of the two triangles there (equal: the surface folds)
+    std::pair<std::size_t, std::size_t> min_contact_patches{0, 0};
+    /// and their names
+    std::pair<std::string, std::string> min_contact_patch_names;
+    /// edges where the region's angle is under `sharp_angle_bound`, and their total length
+    std::size_t number_of_sharp_contact_edges = 0;
+    double sharp_contact_length = 0.; ///< total length of those edges
   };
 
   /// a patch with the same region on both sides (e.g. a fault ending inside a body)
@@ -93,6 +100,23 @@ struct Geological_model_summary
     std::string region_name;
     /// triangles of the patch
     std::size_t number_of_triangles = 0;
+  };
+
+  /// a patch whose border curves meet at a small angle (see `patch_corner_angles()`)
+  struct Sharp_patch_corner
+  {
+    /// patch index
+    std::size_t patch = 0;
+    /// patch name
+    std::string name;
+    /// the patch's smallest angle at a point of its border (degrees)
+    double angle = 0.;
+    /// that point
+    std::array<double, 3> point{{0., 0., 0.}};
+    /// the patch's border points with an angle under `sharp_angle_bound`
+    std::size_t number_of_sharp_corners = 0;
+    /// each of them: x, y, z and the patch's angle there
+    std::vector<std::array<double, 4> > corners;
   };
 
   /// the file the model was read from
@@ -115,9 +139,14 @@ struct Geological_model_summary
   std::string min_angle_patch_name;
   double poor_angle_bound = 1.;            ///< angle under which a triangle counts as poor
   std::size_t number_of_poor_triangles = 0; ///< triangles with an angle under `poor_angle_bound`
+  /// a region's angle between surfaces at an edge, or a patch's between border curves
+  /// at a point, under which it counts as sharp
+  double sharp_angle_bound = 10.;
   std::vector<Region> regions;             ///< regions 1..n, in order
   /// patches with the same region on both sides
   std::vector<Surface_inside_region> surfaces_inside_regions;
+  /// the patches with a corner under `sharp_angle_bound`, sharpest first
+  std::vector<Sharp_patch_corner> sharp_patch_corners;
 };
 
 namespace internal {
@@ -235,7 +264,8 @@ inline std::string format_number(double x, const char* format = "%.4g")
 \ingroup PkgBubbleMesh3Ref
 
 Computes the summary of `model`: per region its triangle and point counts,
-volume, edge lengths and smallest triangle angle; the surfaces inside regions;
+volume, edge lengths, smallest triangle angle and smallest angle between two
+of its surfaces at an edge (`region_contact_angles()`); the surfaces inside regions;
 the bounding box, totals, and the smallest triangle angle of the whole input
 with the triangle where it occurs. The model should have valid indices (see
 `validate_geological_model()`); it need not be valid otherwise.
@@ -245,6 +275,13 @@ with the triangle where it occurs. The model should have valid indices (see
     \cgalParamDescription{triangles with an angle under this bound (degrees) count as poor, and the text summary warns about them}
     \cgalParamType{`double`}
     \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{sharp_angle_bound}
+    \cgalParamDescription{edges where a region's angle between two of its surfaces, and border points
+      where a patch's angle between two of its border curves, is under this bound (degrees) are sharp,
+      and the text summary warns about them}
+    \cgalParamType{`double`}
+    \cgalParamDefault{10}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 */
@@ -258,6 +295,7 @@ Geological_model_summary summarize_geological_model(const Geological_model_3<Geo
 
   Geological_model_summary s;
   s.poor_angle_bound = choose_parameter(get_parameter(np, Bubble_mesh_3::internal_np::poor_angle_bound), 1.);
+  s.sharp_angle_bound = choose_parameter(get_parameter(np, Bubble_mesh_3::internal_np::sharp_angle_bound), 10.);
   s.file_name = model.file_name();
   s.number_of_points = model.number_of_points();
   s.number_of_triangles = model.number_of_triangles();
@@ -311,6 +349,7 @@ Geological_model_summary summarize_geological_model(const Geological_model_3<Geo
   s.median_edge_length = global.median;
   s.max_edge_length = global.max;
 
+  const std::vector<Region_contact_angles> contacts = region_contact_angles(model, s.sharp_angle_bound);
   std::vector<bool> used(model.number_of_points(), false);
   for(std::size_t r = 1; r <= nr; ++r)
   {
@@ -342,6 +381,15 @@ Geological_model_summary summarize_geological_model(const Geological_model_3<Geo
     g.min_edge_length = l.min;
     g.median_edge_length = l.median;
     g.max_edge_length = l.max;
+    const Region_contact_angles& c = contacts[r];
+    g.min_contact_angle = c.min_angle;
+    g.min_contact_point = c.min_angle_point;
+    g.min_contact_patches = c.min_angle_patches;
+    if(!std::isnan(c.min_angle))
+      g.min_contact_patch_names = std::make_pair(model.patch(c.min_angle_patches.first).name,
+                                                 model.patch(c.min_angle_patches.second).name);
+    g.number_of_sharp_contact_edges = c.number_of_sharp_edges;
+    g.sharp_contact_length = c.sharp_edge_length;
     s.regions.push_back(g);
   }
 
@@ -357,6 +405,27 @@ Geological_model_summary summarize_geological_model(const Geological_model_3<Geo
     a.number_of_triangles = inside_patch_count[p];
     s.surfaces_inside_regions.push_back(a);
   }
+
+  const std::vector<Patch_corner_angles> corners = patch_corner_angles(model, s.sharp_angle_bound);
+  for(std::size_t p = 0; p < corners.size(); ++p)
+  {
+    if(corners[p].number_of_sharp_corners == 0) continue;
+    Geological_model_summary::Sharp_patch_corner c;
+    c.patch = p;
+    c.name = model.patch(p).name;
+    c.angle = corners[p].min_angle;
+    c.point = corners[p].min_angle_point;
+    c.number_of_sharp_corners = corners[p].number_of_sharp_corners;
+    for(const auto& vc : corners[p].sharp_corners)
+    {
+      const auto& q = model.point(vc.first);
+      c.corners.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()), vc.second}});
+    }
+    s.sharp_patch_corners.push_back(c);
+  }
+  std::stable_sort(s.sharp_patch_corners.begin(), s.sharp_patch_corners.end(),
+                   [](const Geological_model_summary::Sharp_patch_corner& a,
+                      const Geological_model_summary::Sharp_patch_corner& b) { return a.angle < b.angle; });
   return s;
 }
 
@@ -364,7 +433,9 @@ Geological_model_summary summarize_geological_model(const Geological_model_3<Geo
 \ingroup PkgBubbleMesh3Ref
 
 Writes `s` as a compact table for people, with a warning when the input has
-triangles with an angle under `s.poor_angle_bound`.
+triangles with an angle under `s.poor_angle_bound`, one for each region
+whose surfaces meet at an edge at less than `s.sharp_angle_bound`, and one
+for the patches whose border curves do.
 */
 inline std::ostream& write_summary_text(std::ostream& os, const Geological_model_summary& s)
 {
@@ -412,6 +483,41 @@ inline std::ostream& write_summary_text(std::ostream& os, const Geological_model
        << s.min_angle_triangle << " (patch '" << s.min_angle_patch_name << "'); " << s.number_of_poor_triangles
        << " triangles have an angle under " << format_number(s.poor_angle_bound, "%g")
        << " deg: tetrahedra at those triangles will be poor; try --remesh-surfaces\n";
+  for(const auto& r : s.regions)
+  {
+    if(r.number_of_sharp_contact_edges == 0) continue;
+    const auto& n = r.min_contact_patch_names;
+    os << "warning: region " << r.index << " '" << r.name << "': its surfaces meet at "
+       << format_number(r.min_contact_angle, "%.3g") << " deg at (" << format_number(r.min_contact_point[0], "%.10g")
+       << ", " << format_number(r.min_contact_point[1], "%.10g") << ", " << format_number(r.min_contact_point[2], "%.10g")
+       << "), "
+       << (r.min_contact_patches.first == r.min_contact_patches.second
+             ? "where patch '" + n.first + "' folds back"
+             : "between patches '" + n.first + "' and '" + n.second + "'")
+       << "; " << r.number_of_sharp_contact_edges << (r.number_of_sharp_contact_edges == 1 ? " edge" : " edges")
+       << " (total length "
+       << format_number(r.sharp_contact_length, "%.4g") << ") under " << format_number(s.sharp_angle_bound, "%g")
+       << " deg, as at a pinch-out: no conforming mesh has good tetrahedra there, and the quality report counts"
+          " them apart\n";
+  }
+  if(!s.sharp_patch_corners.empty())
+  {
+    std::size_t corners = 0;
+    for(const auto& c : s.sharp_patch_corners) corners += c.number_of_sharp_corners;
+    os << "warning: " << s.sharp_patch_corners.size() << (s.sharp_patch_corners.size() == 1 ? " patch has " : " patches have ")
+       << corners << (corners == 1 ? " corner" : " corners") << " under " << format_number(s.sharp_angle_bound, "%g")
+       << " deg, where two of " << (s.sharp_patch_corners.size() == 1 ? "its" : "their")
+       << " border curves meet (as where a strip between two cut lines ends): triangles there"
+          " are thin however the surfaces are meshed; sharpest:";
+    for(std::size_t i = 0; i < (std::min)(std::size_t(3), s.sharp_patch_corners.size()); ++i)
+    {
+      const auto& c = s.sharp_patch_corners[i];
+      os << (i == 0 ? " " : ", ") << "patch '" << c.name << "' " << format_number(c.angle, "%.3g") << " deg at ("
+         << format_number(c.point[0], "%.10g") << ", " << format_number(c.point[1], "%.10g") << ", "
+         << format_number(c.point[2], "%.10g") << ")";
+    }
+    os << (s.sharp_patch_corners.size() > 3 ? ", ...\n" : "\n");
+  }
   return os;
 }
 
@@ -444,6 +550,7 @@ inline std::ostream& write_summary_json(std::ostream& os, const Geological_model
      << ", \"patch\": " << s.min_angle_patch << ", \"patch_name\": " << json_string(s.min_angle_patch_name) << "},\n"
      << "  \"poor_angle_bound\": " << json_number(s.poor_angle_bound) << ",\n"
      << "  \"number_of_poor_triangles\": " << s.number_of_poor_triangles << ",\n"
+     << "  \"sharp_angle_bound\": " << json_number(s.sharp_angle_bound) << ",\n"
      << "  \"regions\": [";
   for(std::size_t i = 0; i < s.regions.size(); ++i)
   {
@@ -454,7 +561,11 @@ inline std::ostream& write_summary_json(std::ostream& os, const Geological_model
        << ", \"number_of_points\": " << r.number_of_points << ", \"volume\": " << json_number(r.volume)
        << ", \"edge_length\": " << lengths(r.min_edge_length, r.median_edge_length, r.max_edge_length)
        << ", \"min_angle\": " << json_number(r.min_angle) << ", \"min_angle_triangle\": " << r.min_angle_triangle
-       << "}";
+       << ", \"min_contact_angle\": " << json_number(r.min_contact_angle) << ", \"min_contact_point\": ["
+       << json_number(r.min_contact_point[0]) << ", " << json_number(r.min_contact_point[1]) << ", "
+       << json_number(r.min_contact_point[2]) << "], \"min_contact_patches\": [" << r.min_contact_patches.first << ", "
+       << r.min_contact_patches.second << "], \"number_of_sharp_contact_edges\": " << r.number_of_sharp_contact_edges
+       << ", \"sharp_contact_length\": " << json_number(r.sharp_contact_length) << "}";
   }
   os << (s.regions.empty() ? "],\n" : "\n  ],\n") << "  \"surfaces_inside_regions\": [";
   for(std::size_t i = 0; i < s.surfaces_inside_regions.size(); ++i)
@@ -464,7 +575,20 @@ inline std::ostream& write_summary_json(std::ostream& os, const Geological_model
        << ", \"region\": " << a.region << ", \"region_name\": " << json_string(a.region_name)
        << ", \"number_of_triangles\": " << a.number_of_triangles << "}";
   }
-  os << (s.surfaces_inside_regions.empty() ? "]\n" : "\n  ]\n") << "}\n";
+  os << (s.surfaces_inside_regions.empty() ? "],\n" : "\n  ],\n") << "  \"sharp_patch_corners\": [";
+  for(std::size_t i = 0; i < s.sharp_patch_corners.size(); ++i)
+  {
+    const auto& c = s.sharp_patch_corners[i];
+    os << (i == 0 ? "\n" : ",\n") << "    {\"patch\": " << c.patch << ", \"name\": " << json_string(c.name)
+       << ", \"angle\": " << json_number(c.angle) << ", \"point\": [" << json_number(c.point[0]) << ", "
+       << json_number(c.point[1]) << ", " << json_number(c.point[2])
+       << "], \"number_of_sharp_corners\": " << c.number_of_sharp_corners << ", \"corners\": [";
+    for(std::size_t k = 0; k < c.corners.size(); ++k)
+      os << (k == 0 ? "[" : ", [") << json_number(c.corners[k][0]) << ", " << json_number(c.corners[k][1]) << ", "
+         << json_number(c.corners[k][2]) << ", " << json_number(c.corners[k][3]) << "]";
+    os << "]}";
+  }
+  os << (s.sharp_patch_corners.empty() ? "]\n" : "\n  ]\n") << "}\n";
   return os;
 }
 
