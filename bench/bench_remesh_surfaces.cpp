@@ -8,10 +8,11 @@
 // new triangles to the input gives, curve Hausdorff distance, validity of
 // the output (conforming, closed oriented regions, no crossing) and time.
 //
-// Usage: bench_remesh_surfaces [--details] [--size L] MODEL [MODEL ...]
+// Usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] MODEL [MODEL ...]
 //   (default: the bundled model and every ../shared/data/geomodels model of issue 9)
 //   --details  also lists the triangles under 25 degrees that no input corner forces,
 //              and the validation problems of an invalid output
+//   --refine-ribbons  the sizing field's ribbon rule (refine_ribbons(true))
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
@@ -106,7 +107,7 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
 
 int main(int argc, char** argv)
 {
-  bool show_details = false;
+  bool show_details = false, ribbons = false;
   double size = 0.;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
@@ -114,9 +115,10 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "--details") show_details = true;
     else if(a == "--size" && i + 1 < argc) size = std::atof(argv[++i]);
+    else if(a == "--refine-ribbons") ribbons = true;
     else if(a == "--help" || a == "-h")
     {
-      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [MODEL ...]\n";
+      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [MODEL ...]\n";
       return EXIT_SUCCESS;
     }
     else files.push_back(a);
@@ -158,8 +160,11 @@ int main(int argc, char** argv)
       field.reset(new BM::Remeshing_sizing_field<K>(input, BM::detect_model_features(input),
                                                     BM::parameters::elements_across_thickness(0.)));
     const BM::Surface_remeshing_report r =
-      size > 0. ? BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(field.get(), BM::parameters::edge_length(size)))
-                : BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(field.get()));
+      size > 0. ? BM::remesh_surfaces(input, output,
+                                      BM::parameters::sizing_field_output(field.get(), BM::parameters::edge_length(size,
+                                                                          BM::parameters::refine_ribbons(ribbons))))
+                : BM::remesh_surfaces(input, output,
+                                      BM::parameters::sizing_field_output(field.get(), BM::parameters::refine_ribbons(ribbons)));
     const std::vector<std::string> problems = BM::geological_model_problems(output);
     const std::vector<double> bound = volume_change_bounds(input, output);
     // the worst region against its bound

@@ -106,6 +106,12 @@ const char* usage_text =
 "                             features: better-shaped tetrahedra, more of them (bundled\n"
 "                             model: 1.2 gives an aspect-ratio median of 1.80 instead of\n"
 "                             1.85 with 42 % more tetrahedra)\n"
+"  --refine-ribbons           with --remesh-surfaces: size a ribbon (a patch between two\n"
+"                             curves meeting at under 10 degrees, e.g. a fault strip\n"
+"                             between two horizon cut lines; --check lists their corners)\n"
+"                             by its width instead of spanning it with needles. Better\n"
+"                             elements there, many more of them (modelA5: tetrahedra\n"
+"                             under 10 degrees 395 -> 221, run time 241 -> 564 s)\n"
 "  --population-rounds N      most rounds of population control (bubbles deleted where\n"
 "                             crowded, inserted in gaps), each followed by a relaxation\n"
 "                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
@@ -149,6 +155,7 @@ struct Options
   // Remeshing_sizing_field's size_grading
   double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
   bool size_grading_given = false;
+  bool refine_ribbons = false;
 };
 
 [[noreturn]] void usage_error(const std::string& msg)
@@ -225,6 +232,7 @@ Options parse_options(int argc, char** argv)
       o.layer_elements = n;
       o.layer_elements_given = true;
     }
+    else if(a == "--refine-ribbons") o.refine_ribbons = true;
     else if(a == "--population-rounds") o.population_rounds = parse_count(a, value(a), "rounds", 1000.);
     else if(a == "--size-grading")
     {
@@ -245,6 +253,8 @@ Options parse_options(int argc, char** argv)
     usage_error("--layer-elements is a rule of --remesh-surfaces: give both");
   if(o.size_grading_given && !o.remesh_surfaces)
     usage_error("--size-grading is a rule of --remesh-surfaces: give both");
+  if(o.refine_ribbons && !o.remesh_surfaces)
+    usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
   if(o.threads < 0) usage_error("--threads must not be negative");
   if(!(o.planar_angle_bound >= 0. && o.planar_angle_bound <= 30.))
     usage_error("--planar-angle-bound must be in [0, 30] degrees");
@@ -353,8 +363,9 @@ int main(int argc, char** argv)
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
                     BM::parameters::elements_across_thickness(opt.layer_elements,
                     BM::parameters::size_grading(opt.size_grading,
+                    BM::parameters::refine_ribbons(opt.refine_ribbons,
                     BM::parameters::number_of_population_rounds(opt.population_rounds,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

@@ -163,6 +163,10 @@ check "--size-grading without --remesh-surfaces says so" contains "$err" "--reme
 run "$tmp/slab_box.obj" --remesh-surfaces --size-grading 1
 check "--size-grading 1 exits 2" test "$rc" -eq 2
 check "--help lists --size-grading" bash -c "'$exe' --help | grep -q -- --size-grading"
+run "$tmp/slab_box.obj" --refine-ribbons
+check "--refine-ribbons without --remesh-surfaces exits 2" test "$rc" -eq 2
+check "--refine-ribbons without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
+check "--help lists --refine-ribbons" bash -c "'$exe' --help | grep -q -- --refine-ribbons"
 
 # --population-rounds: with 0 no pass thins the initial bubbles (placed about 8 times
 # too dense), so the bundled model keeps more of them than with population control

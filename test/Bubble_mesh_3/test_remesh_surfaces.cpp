@@ -512,6 +512,65 @@ void test_overhang()
   assert(r.max_relative_volume_error < 1e-4);
 }
 
+// A ribbon: the top face of a box holds a strip between two curves that meet at
+// a corner at atan(1/20) = 2.86 degrees and end 0.5 apart, 10 away (a fault strip
+// between two horizon cut lines). The curves touch, so the curve proximity rule
+// skips them, and the strip used to be spanned by needles of the patch size; the
+// ribbon rule (refine_ribbons) sizes it by its width, so that its triangles away from the corner
+// are as good as elsewhere.
+void test_ribbon()
+{
+  std::cout << "a ribbon between two curves meeting at 2.86 degrees\n";
+  Builder b;
+  const std::size_t rock = b.model.add_region("rock");
+  const std::size_t skin = b.model.add_patch("skin", 0, rock), strip = b.model.add_patch("strip", 0, rock),
+                    top = b.model.add_patch("top", 0, rock);
+  b.set_edge(Point(10, 0, 4), Point(10, 8, 4), {0.0625});
+  b.rectangle(skin, Point(0, 0, 0), Point(10, 0, 0), Point(10, 8, 0), Point(0, 8, 0), Vector(0, 0, -1));
+  b.rectangle(skin, Point(0, 0, 0), Point(10, 0, 0), Point(10, 0, 4), Point(0, 0, 4), Vector(0, -1, 0));
+  b.rectangle(skin, Point(0, 8, 0), Point(10, 8, 0), Point(10, 8, 4), Point(0, 8, 4), Vector(0, 1, 0));
+  b.rectangle(skin, Point(0, 0, 0), Point(0, 8, 0), Point(0, 8, 4), Point(0, 0, 4), Vector(-1, 0, 0));
+  b.rectangle(skin, Point(10, 0, 0), Point(10, 8, 0), Point(10, 8, 4), Point(10, 0, 4), Vector(1, 0, 0));
+  const Point o(0, 0, 4), e(10, 0, 4), s(10, 0.5, 4);
+  b.polygon(strip, {o, e, s}, CGAL::centroid(o, e, s), Vector(0, 0, 1));
+  b.rectangle(top, o, s, Point(10, 8, 4), Point(0, 8, 4), Vector(0, 0, 1));
+  const Model& input = b.model;
+  BM::validate_geological_model(input);
+  const BM::Model_features f = BM::detect_model_features(input);
+  // by default the rule is off: the strip is spanned at the floor of the thickness rule or more
+  const BM::Remeshing_sizing_field<K> plain(input, f, BM::parameters::edge_length(1.));
+  assert(plain(Point(5, 0, 4), strip) >= plain.minimum_size());
+  const auto np = BM::parameters::edge_length(1., BM::parameters::refine_ribbons(true));
+  BM::Remeshing_sizing_field<K> field(input, f, np);
+  // on the strip's straight side, the width across at x is x sin(atan(1/20)), and
+  // the samples are half a size apart (the grading adds at most a quarter of it)
+  for(double x : {2., 5., 8.})
+  {
+    const double width = x * std::sin(std::atan(0.05)), h = field(Point(x, 0, 4), strip);
+    std::cout << "  size at x = " << x << ": " << h << " (width " << width << ")\n";
+    assert(h <= 1.25 * width && h >= 0.5 * width);
+  }
+  const BM::Remeshing_sizing_field<K> given = field;
+  Model output;
+  const BM::Surface_remeshing_report r = BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field, np));
+  print("ribbon", r);
+  check_remeshed(input, output, r, field, given, false, false);
+  // the strip's triangles where it is wider than the floor of the thickness rule
+  // (x > 2) are not needles
+  double worst = 180.;
+  std::size_t in_strip = 0;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+  {
+    if(output.patch_of_triangle(t) != strip) continue;
+    ++in_strip;
+    const auto& tri = output.triangle(t);
+    if(CGAL::centroid(output.point(tri[0]), output.point(tri[1]), output.point(tri[2])).x() > 2.)
+      worst = (std::min)(worst, min_angle(output, t));
+  }
+  std::cout << "  strip: " << in_strip << " triangles, smallest angle where x > 2: " << worst << "\n";
+  assert(worst >= 20.);
+}
+
 // GOCAD models named on the command line, looked up in ../shared when not a path
 // (a real model takes tens of seconds: too long for every CI run)
 void test_real_models(const std::vector<std::string>& names)
@@ -552,6 +611,7 @@ int main(int argc, char** argv)
   test_in_memory(BM::Surface_remeshing_method::BUBBLES);
   test_in_memory(BM::Surface_remeshing_method::ISOTROPIC);
   test_overhang();
+  test_ribbon();
   test_real_models(std::vector<std::string>(argv + 1, argv + argc));
   std::cout << "all remesh_surfaces checks passed\n";
   return EXIT_SUCCESS;

@@ -508,7 +508,7 @@ inline std::ostream& write_summary_text(std::ostream& os, const Geological_model
        << corners << (corners == 1 ? " corner" : " corners") << " under " << format_number(s.sharp_angle_bound, "%g")
        << " deg, where two of " << (s.sharp_patch_corners.size() == 1 ? "its" : "their")
        << " border curves meet (as where a strip between two cut lines ends): triangles there"
-          " are thin however the surfaces are meshed; sharpest:";
+          " are thin unless the strip is meshed at its width (--remesh-surfaces --refine-ribbons); sharpest:";
     for(std::size_t i = 0; i < (std::min)(std::size_t(3), s.sharp_patch_corners.size()); ++i)
     {
       const auto& c = s.sharp_patch_corners[i];

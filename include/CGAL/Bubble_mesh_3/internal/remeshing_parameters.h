@@ -45,6 +45,7 @@ enum patch_size_factors_t { patch_size_factors };
 enum elements_across_thickness_t { elements_across_thickness };
 enum minimum_edge_length_t { minimum_edge_length };
 enum size_grading_t { size_grading };
+enum refine_ribbons_t { refine_ribbons };
 enum curve_distance_t { curve_distance };
 enum surface_distance_t { surface_distance };
 enum chart_angle_t { chart_angle };
@@ -91,6 +92,12 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, minimum_edge_length)
 /// largest ratio between the sizes of neighbouring edges (default 1.5): the
 /// size grows by at most `size_grading - 1` per unit of distance
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, size_grading)
+/// \ingroup PkgBubbleMesh3Ref
+/// sizes a ribbon (a patch between two curves that meet at a corner under 10
+/// degrees, such as a fault strip between two horizon cut lines) by its width,
+/// down to a twentieth of `minimum_edge_length`, instead of spanning it with
+/// needles (default `false`: many more elements near long ribbons)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, refine_ribbons)
 /// \ingroup PkgBubbleMesh3Ref
 /// largest distance between a re-meshed contact curve and the input
 /// polyline, as a fraction of the bounding-box diagonal (default 5e-7)
