@@ -136,7 +136,7 @@ public:
       \cgalParamDefault{2}
     \cgalParamNEnd
     \cgalParamNBegin{minimum_edge_length}
-      \cgalParamDescription{floor of the thickness rule, in model units}
+      \cgalParamDescription{floor of the thickness rule, in model units (positive)}
       \cgalParamType{`double`}
       \cgalParamDefault{a tenth of the smallest patch size}
     \cgalParamNEnd
@@ -202,6 +202,8 @@ public:
     grading_ = choose_parameter(get_parameter(np, internal_np::size_grading), default_size_grading);
     refine_ribbons_ = choose_parameter(get_parameter(np, internal_np::refine_ribbons), false);
     CGAL_precondition_msg(grading_ > 1., "size_grading must be above 1");
+    // (0 would let a pinch-out or a ribbon's tip ask for edges down to nothing)
+    CGAL_precondition_msg(minimum_size_ > 0., "minimum_edge_length must be positive");
     slope_ = grading_ - 1.;
 
     add_curve_grading_sources(model, features);
@@ -615,7 +617,8 @@ private:
           // narrower than the floor, smaller edges would only make more needles
           const double h = std::sqrt(across2);
           if(h >= floor && h < b) add_source(Point_3(x.x(), x.y(), x.z()), h);
-          t += 0.5 * (std::max)(floor, h);
+          // (a step of a hundredth of the patch size at least: a floor of 0 must not stall)
+          t += 0.5 * (std::max)({floor, h, 0.01 * b});
         }
       }
     }
