@@ -85,7 +85,7 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
   {
     const auto& tri = output.triangle(t);
-    const double a = BM::internal::remesh_min_angle(output.point(tri[0]), output.point(tri[1]), output.point(tri[2]));
+    const double a = BM::internal::min_angle_degrees(output.point(tri[0]), output.point(tri[1]), output.point(tri[2]));
     if(a < r.angle_bound) small.push_back(std::make_pair(a, t));
   }
   std::sort(small.begin(), small.end());

@@ -211,7 +211,7 @@ double diagonal(const Model& m)
 double min_angle(const Model& m, std::size_t t)
 {
   const auto& tri = m.triangle(t);
-  return BM::internal::remesh_min_angle(m.point(tri[0]), m.point(tri[1]), m.point(tri[2]));
+  return BM::internal::min_angle_degrees(m.point(tri[0]), m.point(tri[1]), m.point(tri[2]));
 }
 
 // share of distinct output edges within [0.5, 1.5] of the field (the smaller target of its patches)

@@ -8,6 +8,7 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/internal/union_find.h>
+#include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
 #include <CGAL/Bbox_3.h>
 
 #include <algorithm>
@@ -121,10 +122,7 @@ std::vector<Region_contact_angles> region_contact_angles(const Geological_model_
   std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
     return std::make_pair(std::make_pair(x.a, x.b), x.triangle) < std::make_pair(std::make_pair(y.a, y.b), y.triangle);
   });
-  auto coords = [&](std::size_t i) {
-    const auto& p = model.point(i);
-    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  };
+  auto coords = [&](std::size_t i) { return internal::coordinates(model.point(i)); };
   const double pi = 3.14159265358979323846;
   std::vector<std::pair<double, std::size_t> > around; // (angle around the edge, side)
   std::vector<std::size_t> counted;                     // regions with a sharp sector at the edge
@@ -262,10 +260,7 @@ std::vector<Patch_corner_angles> patch_corner_angles(const Geological_model_3<Ge
   auto on_border = [&](std::size_t a, std::size_t b, std::size_t p) {
     return std::binary_search(border.begin(), border.end(), Key{{(std::min)(a, b), (std::max)(a, b), p}});
   };
-  auto coords = [&](std::size_t i) {
-    const auto& p = model.point(i);
-    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  };
+  auto coords = [&](std::size_t i) { return internal::coordinates(model.point(i)); };
   // (patch, point, triangle) for every corner of every triangle
   std::vector<Key> corners;
   corners.reserve(3 * model.number_of_triangles());
@@ -300,12 +295,8 @@ std::vector<Patch_corner_angles> patch_corner_angles(const Geological_model_3<Ge
     for(std::size_t i = 0; i < m; ++i)
     {
       const auto w = others(i);
-      const std::array<double, 3> q = coords(w.first), r = coords(w.second);
-      const double u[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]}, x[3] = {r[0] - o[0], r[1] - o[1], r[2] - o[2]};
-      const double c[3] = {u[1] * x[2] - u[2] * x[1], u[2] * x[0] - u[0] * x[2], u[0] * x[1] - u[1] * x[0]};
       const std::size_t root = internal::uf_find(parent, i);
-      sum[root] += std::atan2(std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), u[0] * x[0] + u[1] * x[1] + u[2] * x[2]) *
-                   180. / 3.14159265358979323846;
+      sum[root] += internal::angle_degrees(o, coords(w.first), coords(w.second));
       if(on_border(v, w.first, p) || on_border(v, w.second, p)) reaches[root] = 1;
     }
     Patch_corner_angles& a = out[p];

@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
+#include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Named_function_parameters.h>
@@ -170,28 +171,6 @@ inline Length_statistics length_statistics(std::vector<double>& v)
   s.min = *std::min_element(v.begin(), v.end());
   s.max = *std::max_element(v.begin(), v.end());
   return s;
-}
-
-// smallest angle of a triangle in degrees, from atan2(|u x v|, u.v): accurate for tiny angles
-template <class Point>
-double min_angle_degrees(const Point& a, const Point& b, const Point& c)
-{
-  const Point* p[3] = {&a, &b, &c};
-  double best = 180.;
-  for(int i = 0; i < 3; ++i)
-  {
-    const Point& o = *p[i];
-    const Point& q = *p[(i + 1) % 3];
-    const Point& r = *p[(i + 2) % 3];
-    const double u[3] = {CGAL::to_double(q.x()) - CGAL::to_double(o.x()), CGAL::to_double(q.y()) - CGAL::to_double(o.y()),
-                         CGAL::to_double(q.z()) - CGAL::to_double(o.z())};
-    const double v[3] = {CGAL::to_double(r.x()) - CGAL::to_double(o.x()), CGAL::to_double(r.y()) - CGAL::to_double(o.y()),
-                         CGAL::to_double(r.z()) - CGAL::to_double(o.z())};
-    const double cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
-    const double angle = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
-    best = (std::min)(best, angle * 180. / 3.14159265358979323846);
-  }
-  return best;
 }
 
 template <class GeomTraits>

@@ -18,6 +18,7 @@
 #include <CGAL/Bubble_mesh_3/internal/parallel_loops.h>
 #include <CGAL/Bubble_mesh_3/internal/remeshing_parameters.h>
 #include <CGAL/Bubble_mesh_3/internal/resample_curves.h>
+#include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -634,7 +635,7 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
   // angles, and which small angles the input forces (a narrow sector at a curve point)
   auto min_angle_of = [](const Geological_model_3<GeomTraits>& m, std::size_t t) {
     const auto& tri = m.triangle(t);
-    return remesh_min_angle(m.point(tri[0]), m.point(tri[1]), m.point(tri[2]));
+    return min_angle_degrees(m.point(tri[0]), m.point(tri[1]), m.point(tri[2]));
   };
   report.input_min_angle = 180.;
   std::size_t input_small = 0;
@@ -652,10 +653,7 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
   // angle of each output triangle at each corner
   auto corner_angle = [&](std::size_t t, int k) {
     const auto& tri = output.triangle(t);
-    const Point_3& o = output.point(tri[k]);
-    const auto u = output.point(tri[(k + 1) % 3]) - o, v = output.point(tri[(k + 2) % 3]) - o;
-    return std::atan2(std::sqrt(CGAL::to_double(CGAL::cross_product(u, v).squared_length())), CGAL::to_double(u * v)) *
-           180. / 3.14159265358979323846;
+    return internal::angle_degrees(output.point(tri[k]), output.point(tri[(k + 1) % 3]), output.point(tri[(k + 2) % 3]));
   };
   // the fan of triangles of one patch around a curve point, cut at curve edges
   std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > around; // (point, patch) -> triangles

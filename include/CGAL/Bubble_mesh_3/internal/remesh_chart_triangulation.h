@@ -19,6 +19,7 @@
 #include <CGAL/Bubble_mesh_3/internal/remesh_charts.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_triangle_tree.h>
 #include <CGAL/Bubble_mesh_3/internal/resample_curves.h>
+#include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Fuzzy_sphere.h>
@@ -43,23 +44,6 @@
 namespace CGAL {
 namespace Bubble_mesh_3 {
 namespace internal {
-
-// smallest angle (degrees) of a 3D triangle, accurate for tiny angles
-template <class Point_3>
-double remesh_min_angle(const Point_3& a, const Point_3& b, const Point_3& c)
-{
-  const Point_3* p[3] = {&a, &b, &c};
-  double best = 180.;
-  for(int i = 0; i < 3; ++i)
-  {
-    const auto u = *p[(i + 1) % 3] - *p[i];
-    const auto v = *p[(i + 2) % 3] - *p[i];
-    const auto w = CGAL::cross_product(u, v);
-    const double angle = std::atan2(std::sqrt(CGAL::to_double(w.squared_length())), CGAL::to_double(u * v));
-    best = (std::min)(best, angle * 180. / 3.14159265358979323846);
-  }
-  return best;
-}
 
 template <class Point_3>
 double remesh_circumradius(const Point_3& a, const Point_3& b, const Point_3& c)
@@ -646,7 +630,7 @@ private:
         const Point_3& a = pos3_[f->vertex(0)->info()];
         const Point_3& b = pos3_[f->vertex(1)->info()];
         const Point_3& c = pos3_[f->vertex(2)->info()];
-        const double angle = remesh_min_angle(a, b, c);
+        const double angle = min_angle_degrees(a, b, c);
         if(angle >= param_.angle_bound + 2.) continue;
         // all three vertices fixed: nothing to gain from the circumcentre if it leaves the chart
         candidates.push_back(std::make_pair(angle, CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(),

@@ -87,8 +87,8 @@ std::size_t flip_to_improve_angles(const std::vector<Point_3>& points, std::vect
     const Point_3 &pa = points[a], &pb = points[b], &pc = points[c], &pd = points[d];
     const auto n1 = remesh_unit_normal(pa, pb, pc), n2 = remesh_unit_normal(pb, pa, pd);
     if(CGAL::to_double(n1 * n2) < cos_dihedral) continue;
-    const double old_min = (std::min)(remesh_min_angle(pa, pb, pc), remesh_min_angle(pb, pa, pd));
-    const double new_min = (std::min)(remesh_min_angle(pa, pd, pc), remesh_min_angle(pd, pb, pc));
+    const double old_min = (std::min)(min_angle_degrees(pa, pb, pc), min_angle_degrees(pb, pa, pd));
+    const double new_min = (std::min)(min_angle_degrees(pa, pd, pc), min_angle_degrees(pd, pb, pc));
     if(!(new_min > old_min + 1e-6)) continue;
     const auto ns = n1 + n2;
     const auto m1 = remesh_unit_normal(pa, pd, pc), m2 = remesh_unit_normal(pd, pb, pc);
@@ -154,7 +154,7 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
           sum = sum + (points[w] - CGAL::ORIGIN);
           ++count;
         }
-      const double a = remesh_min_angle(points[tri[0]], points[tri[1]], points[tri[2]]);
+      const double a = min_angle_degrees(points[tri[0]], points[tri[1]], points[tri[2]]);
       old_min = (std::min)(old_min, a);
       old_normals.push_back(remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]));
       if(a < angle_goal)
@@ -190,7 +190,7 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
       for(std::size_t i = 0; i < inc.size() && !folded; ++i)
       {
         const auto& tri = triangles[inc[i]];
-        new_min = (std::min)(new_min, remesh_min_angle(points[tri[0]], points[tri[1]], points[tri[2]]));
+        new_min = (std::min)(new_min, min_angle_degrees(points[tri[0]], points[tri[1]], points[tri[2]]));
         const Vector_3 n = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
         if(!(CGAL::to_double(n * old_normals[i]) > 0.5)) folded = true;
       }
