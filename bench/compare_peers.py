@@ -275,18 +275,23 @@ def mesher_output(kind, workdir, base):
     return os.path.join(workdir, base + ".mesh")
 
 
-def run_model(model, args, tools, avail, out_dir, selected, deadline):
+# The runs go in phases over all models, quickest first, so that when the time
+# budget runs out it cuts the slowest runs (TetGen's quality refinement, our
+# re-meshed runs) of every model rather than every run of the last models.
+PHASES = [["tetgen-pA", "tetgen-pYA", "gmsh"], ["bubble", "bubble-keep"], ["tetgen-pq"], ["bubble-remesh"]]
+
+
+def prepare_model(model, args, tools, out_dir):
+    """The model's own numbers (volumes, from bubble_mesh_3 --check) and the peers' inputs."""
     name = model_name(model)
     mdir = os.path.join(out_dir, name)
     os.makedirs(mdir, exist_ok=True)
-    rows = []
-    print("== %s" % model, flush=True)
-
-    # the model's own numbers (volume) from bubble_mesh_3 --check
+    print("== %s: inputs" % model, flush=True)
     summary_path = os.path.join(mdir, "summary.json")
     r = run([tools["bubble_mesh_3"], os.path.abspath(model), "--check", "-q", "--summary-json", summary_path],
             mdir, args.timeout, os.path.join(mdir, "check.log"), use_time=False)
     region_volumes = None  # region index -> volume
+    triangles = None
     if r["status"] == "ok":
         with open(summary_path) as f:
             s = json.load(f)
@@ -294,114 +299,118 @@ def run_model(model, args, tools, avail, out_dir, selected, deadline):
         triangles = s.get("number_of_triangles")
     else:
         print("   bubble_mesh_3 --check: %s %s" % (r["status"], r["reason"]))
-        triangles = None
-
     r = run([tools["export"], os.path.abspath(model), "--out-dir", mdir, "--name", name], mdir, args.timeout,
             os.path.join(mdir, "export.log"), use_time=False)
-    export_ok = os.path.exists(os.path.join(mdir, name + ".poly"))
     if r["status"] != "ok":
         print("   export_peer_inputs: %s %s" % (r["status"], r["reason"]))
+    return {"model": model, "name": name, "mdir": mdir, "region_volumes": region_volumes, "triangles": triangles,
+            "export_ok": os.path.exists(os.path.join(mdir, name + ".poly"))}
 
-    for key, (label, kind, extra) in zip(MESHER_KEYS, MESHERS):
-        if key not in selected:
-            continue
-        row = {"model": name, "mesher": label, "key": key, "status": "", "error": "", "tets": None,
-               "vertices": None, "time_s": None, "cpu_s": None, "peak_mib": None, "min_dihedral": None,
-               "share_under_10": None, "share_under_10_unexplained": None, "mean_smallest_dihedral": None, "aspect_ratio_median": None,
-               "triangles": triangles, "kept_whole": None, "volume_rel_error": None, "mesh": None, "own_time_s": None,
-               "command": ""}
-        rows.append(row)
-        why_not = avail.get(kind if kind != "bubble" else key)
-        if why_not:
-            row["status"] = "not available"
-            row["error"] = why_not
-            print("   %-34s %s" % (label, why_not), flush=True)
-            continue
-        remaining = deadline - time.perf_counter()
-        if remaining < 5.0:
-            row["status"] = "skipped"
-            row["error"] = "skipped: the time budget (--budget %g s) is used up" % args.budget
-            print("   %-34s %s" % (label, row["error"]), flush=True)
-            continue
-        run_timeout = min(args.bubble_timeout if kind == "bubble" else args.timeout, remaining)
-        wdir = os.path.join(mdir, key)
-        if os.path.isdir(wdir):
-            shutil.rmtree(wdir)
-        os.makedirs(wdir)
-        out = mesher_output(kind, wdir, name)
-        if kind == "tetgen":
-            if not export_ok:
-                row["status"], row["error"] = "error", "no TetGen input (export_peer_inputs failed)"
-                continue
-            os.symlink(os.path.join("..", name + ".poly"), os.path.join(wdir, name + ".poly"))
-            cmd = ["tetgen", extra, name + ".poly"]
-        elif kind == "gmsh":
-            if not export_ok:
-                row["status"], row["error"] = "error", "no Gmsh input (export_peer_inputs failed)"
-                continue
-            cmd = [DEBIAN_PYTHON, os.path.abspath(__file__), "--gmsh-worker",
-                   os.path.join(mdir, name + ".surf.msh"), os.path.join(mdir, name + ".regions.json"), out]
-        else:
-            cmd = [tools["bubble_mesh_3"], os.path.abspath(model), "-o", out] + extra + args.bubble_args
-        row["command"] = " ".join(shlex.quote(c) for c in cmd)
-        res = run(cmd, wdir, run_timeout, os.path.join(wdir, "run.log"))
-        row["status"] = res["status"]
-        row["error"] = res["reason"]
-        row["time_s"] = res["wall_s"]
-        row["cpu_s"] = res["cpu_s"]
-        row["peak_mib"] = res["peak_mib"]
-        row["own_time_s"] = _own_time(kind, os.path.join(wdir, "run.log"))
-        if kind == "bubble":
-            row["stages"] = _bubble_stages(os.path.join(wdir, "run.log"))
-        if res["status"] == "ok" and not os.path.exists(out):
-            row["status"], row["error"] = "error", "no output mesh %s" % out
-        print("   %-34s %-8s %7.2f s (CPU %s s) %s" % (label, row["status"], res["wall_s"], fmt(res["cpu_s"], ".2f"),
-                                                    row["error"]), flush=True)
-        if row["status"] != "ok":
-            continue
-        row["mesh"] = out
-        qjson = os.path.join(wdir, "quality.json")
-        q = run([tools["quality"], out, "--json", qjson], wdir, args.timeout, os.path.join(wdir, "quality.log"),
-                use_time=False)
-        if q["status"] == "ok":
-            with open(qjson) as f:
-                rep = json.load(f)
-            a = rep["all"]
-            row["tets"] = a["tetrahedra"]
-            row["vertices"] = rep.get("points", a.get("vertices"))
-            row["min_dihedral"] = a["dihedral_angle"]["min"]
-            row["share_under_10"] = a["smallest_dihedral_angle"]["share_under_10"]
-            row["share_under_10_unexplained"] = a["smallest_dihedral_angle"].get(
-                "share_under_10_not_at_small_surface_angle")
-            row["share_under_10_at_sharp_contact"] = a["smallest_dihedral_angle"].get(
-                "share_under_10_at_sharp_contact")
-            row["mean_smallest_dihedral"] = a["smallest_dihedral_angle"]["mean"]
-            row["aspect_ratio_median"] = a["aspect_ratio"]["median"]
-            if region_volumes:
-                row["volume_rel_error"] = region_volume_error(region_volumes, rep.get("regions", []))
-        else:
-            row["error"] = (row["error"] + "; " if row["error"] else "") + "quality: " + q["reason"]
-        kjson = os.path.join(wdir, "kept_whole.json")
-        k = run([tools["export"], os.path.abspath(model), "--kept-whole", out, "--json", kjson], wdir,
-                args.timeout, os.path.join(wdir, "kept_whole.log"), use_time=False)
-        if k["status"] == "ok":
-            with open(kjson) as f:
-                kw = json.load(f)
-            row["kept_whole"] = kw["kept_whole"]
-            row["triangles"] = kw["triangles"]
 
-    # side-by-side histograms of the meshes that were measured
+def run_row(ctx, key, args, tools, avail, deadline):
+    """One mesher on one model: runs it (within the time left) and measures its mesh."""
+    label, kind, extra = MESHERS[MESHER_KEYS.index(key)]
+    name, mdir, model = ctx["name"], ctx["mdir"], ctx["model"]
+    row = {"model": name, "mesher": label, "key": key, "status": "", "error": "", "tets": None,
+           "vertices": None, "time_s": None, "cpu_s": None, "peak_mib": None, "min_dihedral": None,
+           "share_under_10": None, "share_under_10_unexplained": None, "mean_smallest_dihedral": None, "aspect_ratio_median": None,
+           "triangles": ctx["triangles"], "kept_whole": None, "volume_rel_error": None, "mesh": None, "own_time_s": None,
+           "command": ""}
+    tag = "   %-16s %-34s" % (name[:16], label)
+    why_not = avail.get(kind if kind != "bubble" else key)
+    if why_not:
+        row["status"] = "not available"
+        row["error"] = why_not
+        print("%s %s" % (tag, why_not), flush=True)
+        return row
+    remaining = deadline - time.perf_counter()
+    if remaining < 5.0:
+        row["status"] = "skipped"
+        row["error"] = "skipped: the time budget (--budget %g s) is used up" % args.budget
+        print("%s %s" % (tag, row["error"]), flush=True)
+        return row
+    run_timeout = min(args.bubble_timeout if kind == "bubble" else args.timeout, remaining)
+    wdir = os.path.join(mdir, key)
+    if os.path.isdir(wdir):
+        shutil.rmtree(wdir)
+    os.makedirs(wdir)
+    out = mesher_output(kind, wdir, name)
+    if kind == "tetgen":
+        if not ctx["export_ok"]:
+            row["status"], row["error"] = "error", "no TetGen input (export_peer_inputs failed)"
+            return row
+        os.symlink(os.path.join("..", name + ".poly"), os.path.join(wdir, name + ".poly"))
+        cmd = ["tetgen", extra, name + ".poly"]
+    elif kind == "gmsh":
+        if not ctx["export_ok"]:
+            row["status"], row["error"] = "error", "no Gmsh input (export_peer_inputs failed)"
+            return row
+        cmd = [DEBIAN_PYTHON, os.path.abspath(__file__), "--gmsh-worker",
+               os.path.join(mdir, name + ".surf.msh"), os.path.join(mdir, name + ".regions.json"), out]
+    else:
+        cmd = [tools["bubble_mesh_3"], os.path.abspath(model), "-o", out] + extra + args.bubble_args
+    row["command"] = " ".join(shlex.quote(c) for c in cmd)
+    res = run(cmd, wdir, run_timeout, os.path.join(wdir, "run.log"))
+    row["status"] = res["status"]
+    row["error"] = res["reason"]
+    row["time_s"] = res["wall_s"]
+    row["cpu_s"] = res["cpu_s"]
+    row["peak_mib"] = res["peak_mib"]
+    row["own_time_s"] = _own_time(kind, os.path.join(wdir, "run.log"))
+    if kind == "bubble":
+        row["stages"] = _bubble_stages(os.path.join(wdir, "run.log"))
+    if res["status"] == "ok" and not os.path.exists(out):
+        row["status"], row["error"] = "error", "no output mesh %s" % out
+    print("%s %-8s %7.2f s (CPU %s s) %s" % (tag, row["status"], res["wall_s"], fmt(res["cpu_s"], ".2f"), row["error"]),
+          flush=True)
+    if row["status"] != "ok":
+        return row
+    row["mesh"] = out
+    qjson = os.path.join(wdir, "quality.json")
+    q = run([tools["quality"], out, "--json", qjson], wdir, args.timeout, os.path.join(wdir, "quality.log"),
+            use_time=False)
+    if q["status"] == "ok":
+        with open(qjson) as f:
+            rep = json.load(f)
+        a = rep["all"]
+        row["tets"] = a["tetrahedra"]
+        row["vertices"] = rep.get("points", a.get("vertices"))
+        row["min_dihedral"] = a["dihedral_angle"]["min"]
+        row["share_under_10"] = a["smallest_dihedral_angle"]["share_under_10"]
+        row["share_under_10_unexplained"] = a["smallest_dihedral_angle"].get(
+            "share_under_10_not_at_small_surface_angle")
+        row["share_under_10_at_sharp_contact"] = a["smallest_dihedral_angle"].get(
+            "share_under_10_at_sharp_contact")
+        row["mean_smallest_dihedral"] = a["smallest_dihedral_angle"]["mean"]
+        row["aspect_ratio_median"] = a["aspect_ratio"]["median"]
+        if ctx["region_volumes"]:
+            row["volume_rel_error"] = region_volume_error(ctx["region_volumes"], rep.get("regions", []))
+    else:
+        row["error"] = (row["error"] + "; " if row["error"] else "") + "quality: " + q["reason"]
+    kjson = os.path.join(wdir, "kept_whole.json")
+    k = run([tools["export"], os.path.abspath(model), "--kept-whole", out, "--json", kjson], wdir,
+            args.timeout, os.path.join(wdir, "kept_whole.log"), use_time=False)
+    if k["status"] == "ok":
+        with open(kjson) as f:
+            kw = json.load(f)
+        row["kept_whole"] = kw["kept_whole"]
+        row["triangles"] = kw["triangles"]
+    return row
+
+
+def draw_histograms(ctx, rows, args, tools, out_dir):
+    """The side-by-side histograms of the model's measured meshes; the SVG's path, or None."""
     measured = [r for r in rows if r["tets"] is not None]
-    svg = None
-    if measured:
-        svg = os.path.join(out_dir, name + ".svg")
-        names = [r["mesher"].replace(",", "") for r in measured]
-        s = run([tools["quality"]] + [r["mesh"] for r in measured] + ["--names", ",".join(names), "--svg", svg],
-                mdir, args.timeout, os.path.join(mdir, "histograms.log"), use_time=False)
-        if s["status"] != "ok":
-            print("   histograms: %s %s" % (s["status"], s["reason"]))
-            svg = None
-    return rows, svg
+    if not measured:
+        return None
+    svg = os.path.join(out_dir, ctx["name"] + ".svg")
+    names = [r["mesher"].replace(",", "") for r in measured]
+    s = run([tools["quality"]] + [r["mesh"] for r in measured] + ["--names", ",".join(names), "--svg", svg],
+            ctx["mdir"], args.timeout, os.path.join(ctx["mdir"], "histograms.log"), use_time=False)
+    if s["status"] != "ok":
+        print("   histograms of %s: %s %s" % (ctx["name"], s["status"], s["reason"]))
+        return None
+    return svg
 
 
 # ---------------------------------------------------------------------------
@@ -474,7 +483,7 @@ def main():
     p.add_argument("--timeout", type=float, default=120.0, help="time limit per run in seconds (default: %(default)s)")
     p.add_argument("--bubble-timeout", type=float, default=None,
                    help="time limit per bubble_mesh_3 run in seconds (default: --timeout)")
-    p.add_argument("--budget", type=float, default=840.0,
+    p.add_argument("--budget", type=float, default=800.0,
                    help="time budget of the whole run in seconds: a run gets at most what is left, and runs "
                         "are skipped (and say so) once it is used up (default: %(default)s)")
     p.add_argument("--meshers", default=",".join(DEFAULT_MESHERS),
@@ -506,12 +515,20 @@ def main():
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
     start = time.perf_counter()
     deadline = start + args.budget
+    contexts = [prepare_model(m, args, tools, out_dir) for m in models]
+    done = [[] for _ in models]  # rows per model
+    for phase in PHASES:
+        for ctx, model_rows in zip(contexts, done):
+            for key in phase:
+                if key in selected:
+                    model_rows.append(run_row(ctx, key, args, tools, avail, deadline))
     rows, svgs = [], {}
-    for m in models:
-        r, svg = run_model(m, args, tools, avail, out_dir, selected, deadline)
-        rows += r
+    for ctx, model_rows in zip(contexts, done):
+        model_rows.sort(key=lambda r: MESHER_KEYS.index(r["key"]))
+        rows += model_rows
+        svg = draw_histograms(ctx, model_rows, args, tools, out_dir)
         if svg:
-            svgs[model_name(m)] = svg
+            svgs[ctx["name"]] = svg
     total = time.perf_counter() - start
     load_end = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
 
