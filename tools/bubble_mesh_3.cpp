@@ -449,6 +449,27 @@ int main(int argc, char** argv)
                 << " Steiner points collapsed, " << sr.number_of_2_3_flips + sr.number_of_edge_removals << " flips, "
                 << sr.number_of_vertices_inserted << " vertices inserted; " << sr.time_perturbation << " s, "
                 << sr.time_collapses << " s, " << sr.time_flips << " s, " << sr.time_insertion << " s)\n";
+    // A region no thicker than its surface triangles are wide (a thin layer, a small body
+    // given by a few triangles) gets no bubble inside: its tetrahedra join surface points. Say so, and what gives a
+    // finer mesh (the input's own size is the default, as in the paper).
+    {
+      std::vector<std::size_t> population(model.number_of_regions() + 1, 0);
+      for(const auto& rr : report.relaxation.regions)
+        if(rr.region < population.size()) population[rr.region] = rr.population;
+      std::vector<std::size_t> bare;
+      for(std::size_t r = 1; r <= model.number_of_regions(); ++r)
+        if(population[r] == 0) bare.push_back(r);
+      if(!bare.empty())
+      {
+        std::cout << "note: " << bare.size() << " of " << model.number_of_regions() << " regions got no bubble inside (";
+        for(std::size_t k = 0; k < bare.size() && k < 5; ++k)
+          std::cout << (k ? ", " : "") << "'" << model.region(bare[k]).name << "'";
+        std::cout << (bare.size() > 5 ? ", ..." : "") << "): they are no thicker than their surface triangles are wide, "
+                  << "so their tetrahedra join surface points only; for a finer mesh, "
+                  << (report.surfaces_remeshed ? "give a smaller --size" : "re-mesh the surfaces at a smaller size (--remesh-surfaces --size S)")
+                  << "\n";
+      }
+    }
     BM::IO::write_quality_report_text(std::cout, quality);
   }
 
