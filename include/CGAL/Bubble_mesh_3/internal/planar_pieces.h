@@ -18,6 +18,7 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h> // smallest_triangle_angle
+#include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
 #include <CGAL/Bubble_mesh_3/internal/union_find.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -76,10 +77,7 @@ namespace internal {
 template <class Point_3>
 double smallest_triangle_angle(const Point_3& a, const Point_3& b, const Point_3& c)
 {
-  auto xyz = [](const Point_3& p) {
-    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  };
-  return smallest_triangle_angle(xyz(a), xyz(b), xyz(c)); // mesh_quality.h
+  return smallest_triangle_angle(coordinates(a), coordinates(b), coordinates(c)); // mesh_quality.h
 }
 
 template <class GeomTraits>
