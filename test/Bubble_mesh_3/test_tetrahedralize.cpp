@@ -829,6 +829,36 @@ void test_layered_model()
                                   jittered_lattice(BM::bbox(m), 60., 10), c3t3);
   assert(r.number_of_interior_points_inserted > 0);
 }
+
+// The same model turned by 30 degrees about the vertical: its box walls are
+// planes only up to the rounding of their points. Before near_coplanarity.h
+// they were neither planar pieces nor one plane group, and the recovery
+// split a wall edge near a corner down to minimum_split_length (the program
+// gave up after two minutes).
+void test_turned_layered_model()
+{
+  Model flat;
+  BM::make_layered_model(flat);
+  Model m = flat;
+  const double c = std::cos(CGAL_PI / 6.), s = std::sin(CGAL_PI / 6.);
+  for(std::size_t i = 0; i < m.number_of_points(); ++i)
+  {
+    const Point_3& p = flat.point(i);
+    m.set_point(i, Point_3(c * p.x() - s * p.y(), s * p.x() + c * p.y(), p.z()));
+  }
+  BM::validate_geological_model(m);
+  // every wall is still one planar piece
+  Model g_flat, g;
+  const BM::Planar_retriangulation_report r_flat = BM::retriangulate_planar_patches(flat, g_flat);
+  const BM::Planar_retriangulation_report r = BM::retriangulate_planar_patches(m, g);
+  std::cout << "turned layered model, planar pieces: " << r << " (not turned: " << r_flat << ")" << std::endl;
+  assert(r.number_of_pieces == r_flat.number_of_pieces);
+  assert(r.number_of_retriangulated_pieces == r_flat.number_of_retriangulated_pieces);
+  const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 60., 10);
+  C3T3 as_given, retriangulated;
+  mesh_and_check("layered model turned by 30 degrees", m, inside, as_given);
+  mesh_and_check("layered model turned by 30 degrees, planar pieces re-triangulated", g, inside, retriangulated);
+}
 #endif
 
 void test_errors()
@@ -924,6 +954,7 @@ int main(int argc, char** argv)
   test_planar_refinement();
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
   test_layered_model();
+  test_turned_layered_model();
 #else
   std::cout << "SKIP: make_layered_model.h is not there" << std::endl;
 #endif

@@ -18,6 +18,7 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h> // smallest_triangle_angle
+#include <CGAL/Bubble_mesh_3/internal/near_coplanarity.h>
 #include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
 #include <CGAL/Bubble_mesh_3/internal/union_find.h>
 
@@ -113,7 +114,8 @@ class Planar_pieces
 public:
   Planar_pieces(const Model& input, double angle_bound)
     : in_(input), np_(input.number_of_points()), nt_(input.number_of_triangles()),
-      sin_bound_(std::sin((std::min)(angle_bound, 34.) * CGAL_PI / 180.)), refine_(angle_bound > 0.)
+      sin_bound_(std::sin((std::min)(angle_bound, 34.) * CGAL_PI / 180.)), refine_(angle_bound > 0.),
+      tolerance_(coplanarity_tolerance(input))
   {
     build_edges();
     build_pieces();
@@ -237,7 +239,7 @@ private:
     if(in_.patch_of_triangle(t1) != in_.patch_of_triangle(t2) || runs(t1, a, b) == runs(t2, a, b)) return false;
     const auto& u = in_.triangle(t1);
     for(std::size_t x : in_.triangle(t2))
-      if(CGAL::orientation(in_.point(u[0]), in_.point(u[1]), in_.point(u[2]), in_.point(x)) != CGAL::COPLANAR)
+      if(!is_nearly_coplanar(in_.point(u[0]), in_.point(u[1]), in_.point(u[2]), in_.point(x), tolerance_))
         return false;
     return true;
   }
@@ -651,6 +653,7 @@ private:
   const std::size_t np_, nt_;
   const double sin_bound_;
   const bool refine_;
+  const double tolerance_; // coplanar up to the rounding of the points (near_coplanarity.h)
   double min_split_length_ = 0.;
   double size_cap_ = std::numeric_limits<double>::infinity(); // the median input edge
   std::size_t budget_ = 0;

@@ -39,6 +39,7 @@
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/internal/union_find.h>
 #include <CGAL/Bubble_mesh_3/internal/cocircular_weights.h>
+#include <CGAL/Bubble_mesh_3/internal/near_coplanarity.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
@@ -335,7 +336,7 @@ public:
   Steiner points are rounded, so points on one plane are only nearly
   coplanar, and four nearly cocircular ones can make a flat cell whose four
   facets all lie on the plane (both diagonals of the quadrilateral). A cell is
-  flat when its four vertices lie on one plane group (exactly coplanar input
+  flat when its four vertices lie on one plane group (coplanar input
   triangles joined by vertices). The surface is the boundary between the
   cells below and above the plane (w.r.t. the group's normal); a flat cell is
   put outside the model when the whole group bounds it on one side (there,
@@ -611,7 +612,7 @@ private:
     triangle_points_.resize(nt);
   }
 
-  // Exactly coplanar triangles that share a vertex are in one plane group
+  // Coplanar triangles (up to rounding) that share a vertex are in one plane group
   // (union-find); the group's normal is that of its first triangle.
   void build_plane_groups()
   {
@@ -626,6 +627,8 @@ private:
     for(std::size_t t = 0; t < nt; ++t)
       for(std::size_t v : model_.triangle(t)) point_triangles_[fill[v]++] = t;
 
+    // coplanar up to the rounding of their points (near_coplanarity.h)
+    const double tolerance = coplanarity_tolerance(model_);
     std::vector<std::size_t> parent = uf_singletons(nt);
     for(std::size_t v = 0; v < np; ++v)
       for(std::size_t i = point_triangles_start_[v]; i < point_triangles_start_[v + 1]; ++i)
@@ -636,8 +639,8 @@ private:
           const auto& a = model_.triangle(t1);
           bool coplanar = true;
           for(std::size_t x : model_.triangle(t2))
-            if(CGAL::orientation(model_.point(a[0]), model_.point(a[1]), model_.point(a[2]), model_.point(x)) !=
-               CGAL::COPLANAR)
+            if(!is_nearly_coplanar(model_.point(a[0]), model_.point(a[1]), model_.point(a[2]), model_.point(x),
+                                   tolerance))
               coplanar = false;
           if(coplanar) uf_union(parent, t1, t2);
         }
