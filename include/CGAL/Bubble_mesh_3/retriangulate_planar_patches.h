@@ -37,9 +37,9 @@ Copies `input` to `output` with every planar piece of a patch triangulated
 anew. A planar piece is a largest set of coplanar (up to a thousand rounding
 units of the largest coordinate: a tilted wall's rounded points), consistently
 oriented triangles of one patch joined by edges that no other triangle uses.
-Regions, patches and the surfaces as point sets are the same (on a tilted piece up
-to that tolerance); only edges
-inside a piece change, and each piece covers the same polygon as before.
+Regions, patches and the surfaces as point sets are the same (on a tilted
+piece up to that tolerance); only edges inside a piece change, and each
+piece covers the same polygon as before.
 
 - A piece gets the constrained Delaunay triangulation of its own points.
 - A piece in an axis plane (x, y or z constant: the walls, top and bottom of

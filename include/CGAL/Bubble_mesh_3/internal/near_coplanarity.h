@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace CGAL {
@@ -47,6 +48,18 @@ bool is_nearly_coplanar(const Point_3& p, const Point_3& q, const Point_3& r, co
   const auto n = CGAL::cross_product(q - p, r - p);
   const double length = std::sqrt(CGAL::to_double(n.squared_length()));
   return length > 0. && std::abs(CGAL::to_double((x - p) * n)) <= tolerance * length;
+}
+
+/// whether the corners of triangle `t2` of `model` lie on the plane of triangle `t1`, exactly or within `tolerance`
+template <class GeomTraits>
+bool are_nearly_coplanar(const Geological_model_3<GeomTraits>& model, std::size_t t1, std::size_t t2,
+                         double tolerance)
+{
+  const auto& a = model.triangle(t1);
+  for(std::size_t x : model.triangle(t2))
+    if(!is_nearly_coplanar(model.point(a[0]), model.point(a[1]), model.point(a[2]), model.point(x), tolerance))
+      return false;
+  return true;
 }
 
 } // namespace internal

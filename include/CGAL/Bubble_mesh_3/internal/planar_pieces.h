@@ -237,11 +237,7 @@ private:
     if(ts.size() != 2) return false;
     const std::size_t t1 = ts[0], t2 = ts[1], a = edge_ends_[e][0], b = edge_ends_[e][1];
     if(in_.patch_of_triangle(t1) != in_.patch_of_triangle(t2) || runs(t1, a, b) == runs(t2, a, b)) return false;
-    const auto& u = in_.triangle(t1);
-    for(std::size_t x : in_.triangle(t2))
-      if(!is_nearly_coplanar(in_.point(u[0]), in_.point(u[1]), in_.point(u[2]), in_.point(x), tolerance_))
-        return false;
-    return true;
+    return are_nearly_coplanar(in_, t1, t2, tolerance_);
   }
 
   void build_pieces()

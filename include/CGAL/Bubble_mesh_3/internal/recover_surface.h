@@ -636,13 +636,7 @@ private:
         {
           const std::size_t t1 = point_triangles_[i], t2 = point_triangles_[j];
           if(uf_find(parent, t1) == uf_find(parent, t2)) continue;
-          const auto& a = model_.triangle(t1);
-          bool coplanar = true;
-          for(std::size_t x : model_.triangle(t2))
-            if(!is_nearly_coplanar(model_.point(a[0]), model_.point(a[1]), model_.point(a[2]), model_.point(x),
-                                   tolerance))
-              coplanar = false;
-          if(coplanar) uf_union(parent, t1, t2);
+          if(are_nearly_coplanar(model_, t1, t2, tolerance)) uf_union(parent, t1, t2);
         }
     plane_group_.assign(nt, 0);
     std::vector<std::size_t> group_of_root(nt, std::size_t(-1));
