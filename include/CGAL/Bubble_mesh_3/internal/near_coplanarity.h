@@ -22,6 +22,7 @@
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -50,15 +51,49 @@ bool is_nearly_coplanar(const Point_3& p, const Point_3& q, const Point_3& r, co
   return length > 0. && std::abs(CGAL::to_double((x - p) * n)) <= tolerance * length;
 }
 
-/// whether the corners of triangle `t2` of `model` lie on the plane of triangle `t1`, exactly or within `tolerance`
+/*
+Whether triangles `t1` and `t2` of `model` lie on one plane, exactly or within
+`tolerance`. The plane the distances are measured from is the one of the
+widest three of their corners: a needle's own plane is tilted by its points'
+rounding over its short side, so measured from a needle the far corners of
+its neighbour (a fan of needles on a turned wall, say) seem to be many times
+the tolerance off a plane they lie on.
+*/
 template <class GeomTraits>
 bool are_nearly_coplanar(const Geological_model_3<GeomTraits>& model, std::size_t t1, std::size_t t2,
                          double tolerance)
 {
   const auto& a = model.triangle(t1);
+  bool exact = true;
   for(std::size_t x : model.triangle(t2))
-    if(!is_nearly_coplanar(model.point(a[0]), model.point(a[1]), model.point(a[2]), model.point(x), tolerance))
+    exact = exact && CGAL::orientation(model.point(a[0]), model.point(a[1]), model.point(a[2]), model.point(x)) ==
+                       CGAL::COPLANAR;
+  if(exact) return true;
+
+  std::array<std::size_t, 6> ids;
+  std::size_t n = 0;
+  for(const auto* tri : {&a, &model.triangle(t2)})
+    for(std::size_t v : *tri)
+      if(std::find(ids.begin(), ids.begin() + n, v) == ids.begin() + n) ids[n++] = v;
+  // the widest triple: the largest cross product
+  std::array<std::size_t, 3> best = {{0, 1, 2}};
+  double best_l2 = -1.;
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = i + 1; j < n; ++j)
+      for(std::size_t k = j + 1; k < n; ++k)
+      {
+        const auto& p = model.point(ids[i]);
+        const double l2 = CGAL::to_double(
+          CGAL::cross_product(model.point(ids[j]) - p, model.point(ids[k]) - p).squared_length());
+        if(l2 > best_l2) { best_l2 = l2; best = {{i, j, k}}; }
+      }
+  for(std::size_t m = 0; m < n; ++m)
+  {
+    if(m == best[0] || m == best[1] || m == best[2]) continue;
+    if(!is_nearly_coplanar(model.point(ids[best[0]]), model.point(ids[best[1]]), model.point(ids[best[2]]),
+                           model.point(ids[m]), tolerance))
       return false;
+  }
   return true;
 }
 

@@ -1073,6 +1073,13 @@ private:
     std::vector<Cell_handle> conflict;
     const int maximum_fold_splits = 64;
     int fold_splits = 0;
+    // Rounded Steiner points can keep a triangle from ever being recovered (on a
+    // wall off the axis planes, each new point may bring new flat cells): past
+    // this many insertions without a new low in its missing sub-facets, it is
+    // named in an error rather than refined without end. On the real models a
+    // triangle gets at most a few dozen points in all.
+    const std::size_t maximum_stalled_insertions = 256;
+    std::size_t fewest_missing = (std::numeric_limits<std::size_t>::max)(), stalled = 0;
     for(;;)
     {
       triangle_dirty_[t] = 0;
@@ -1130,6 +1137,7 @@ private:
       typename CDT::Face_handle worst;
       double worst_r2 = -1.;
       int worst_rank = 2;
+      std::size_t missing = 0;
       for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
       {
         if(f->info() != 1) continue;
@@ -1138,6 +1146,7 @@ private:
         std::array<std::size_t, 3> k = ids;
         std::sort(k.begin(), k.end());
         if(std::binary_search(present_keys.begin(), present_keys.end(), k)) continue;
+        ++missing;
         Cell_handle c;
         int i0, i1, i2;
         const int rank =
@@ -1151,6 +1160,13 @@ private:
           worst = f;
         }
       }
+      if(missing < fewest_missing) { fewest_missing = missing; stalled = 0; }
+      else if(++stalled > maximum_stalled_insertions)
+        throw Tetrahedralization_error("cannot recover " + context + ": " + std::to_string(triangle_points_[t].size()) +
+                                       " Steiner points on it and still " + std::to_string(missing) +
+                                       " sub-facets missing, no fewer for " +
+                                       std::to_string(maximum_stalled_insertions) +
+                                       " insertions (numerical limit: its points are rounded off its plane)");
       if(worst == typename CDT::Face_handle())
       {
         // the sub-facets are there but fold over each other: split its longest
