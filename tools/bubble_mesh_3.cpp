@@ -445,6 +445,10 @@ int main(int argc, char** argv)
               << report.time_placement << " s, relaxation " << report.time_relaxation
               << " s, tetrahedralization " << report.time_tetrahedralization << " s, sliver removal "
               << report.time_sliver_removal << " s\n";
+    if(tr.number_of_guard_points > 0)
+      std::cout << "note: the surface recovery failed at first on a tilted outer wall (planar only up to the "
+                   "rounding of its points) and was run again with "
+                << tr.number_of_guard_points << " guard points mirrored beyond such walls (removed from the mesh)\n";
     // also when no cell was under the bound at first: smoothing and flips may still have run
     if(opt.sliver_removal)
       std::cout << "sliver removal: tetrahedra with a dihedral angle under " << sr.sliver_bound << " degrees "

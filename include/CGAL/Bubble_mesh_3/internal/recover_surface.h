@@ -468,6 +468,13 @@ public:
     }
   }
 
+  /// the plane group of triangle `t` (coplanar input triangles joined by vertices)
+  std::size_t plane_group(std::size_t t) const { return plane_group_[t]; }
+  /// the normal of group `g` (of its first triangle, not normalised)
+  const Vector_3& group_normal(std::size_t g) const { return group_normal_[g]; }
+  /// +1 / -1 when the model's outside lies above / below every triangle of group `g`, else 0
+  int group_outside(std::size_t g) const { return group_outside_[g]; }
+
   Vector_3 triangle_normal(std::size_t t) const
   {
     const auto& tri = model_.triangle(t);
