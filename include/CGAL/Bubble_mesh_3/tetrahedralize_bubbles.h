@@ -242,6 +242,13 @@ The steps:
    (the flat cells that rounded Steiner points can make on a plane are put
    on one side of it); interior points outside every region are removed.
 
+If the recovery fails and the model has tilted outer walls (planar only up to
+the rounding of their points, on the convex hull), steps 2 and 3 run once
+more with guard points: the interior points facing such a wall mirrored
+beyond it, so that the wall's facets seen from outside are Delaunay ones as
+seen from inside. They lie outside the model and are removed in step 4
+(`Tetrahedralization_report::number_of_guard_points`).
+
 Sequential by design: CGAL's parallel insertion needs a `Parallel_tag`
 triangulation, whose storage order (vertex numbering in files, and the order
 in which recovery meets ties) depends on thread scheduling; insertion is a
