@@ -377,19 +377,14 @@ int main(int argc, char** argv)
     else mesh(np);
     stage_timer.stop();
   }
-  catch(const BM::Tetrahedralization_error& e)
-  {
-    std::cerr << "bubble_mesh_3: meshing failed: " << e.what() << "\n";
-    // the surface recovery gave up on a triangle as given: re-meshing replaces those triangles
-    if(!opt.remesh_surfaces)
-      std::cerr << "hint: the input triangles could not all be kept as they are (needles on a wall "
-                   "that is not an axis plane, say); --remesh-surfaces re-meshes the surfaces first, "
-                   "keeping their geometry, contact curves and labels\n";
-    return 1;
-  }
   catch(const std::exception& e)
   {
     std::cerr << "bubble_mesh_3: meshing failed: " << e.what() << "\n";
+    // the surface recovery gave up on a triangle as given: re-meshing replaces those triangles
+    if(!opt.remesh_surfaces && dynamic_cast<const BM::Tetrahedralization_error*>(&e))
+      std::cerr << "hint: the input triangles could not all be kept as they are (needles on a wall "
+                   "that is not an axis plane, say); --remesh-surfaces re-meshes the surfaces first, "
+                   "keeping their geometry, contact curves and labels\n";
     return 1;
   }
 
