@@ -6,6 +6,7 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
+#include <CGAL/Bubble_mesh_3/orient_patch_sides.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 #include <CGAL/Bubble_mesh_3/geological_model_summary.h>
 #include <CGAL/Bubble_mesh_3/IO/internal/write_atomically.h>
@@ -275,11 +276,14 @@ int main(int argc, char** argv)
   const Options opt = parse_options(argc, argv);
   BM::Geological_model_3<K> model;
   CGAL::Real_timer timer;
+  BM::Patch_side_repair repair;
   try
   {
     timer.start();
     BM::IO::read_geological_model(opt.input, model,
                                   BM::parameters::merge_tolerance(opt.merge_tolerance));
+    // a file whose region sides contradict its triangles is mended from the geometry
+    repair = BM::orient_patch_sides(model);
     BM::validate_geological_model(model);
     timer.stop();
   }
@@ -298,6 +302,27 @@ int main(int argc, char** argv)
   if(!opt.quiet)
   {
     std::cout << "read and validated " << opt.input << " in " << timer.time() << " s\n";
+    if(!repair.swapped_patches.empty())
+    {
+      const std::vector<std::size_t>& p = repair.swapped_patches;
+      std::cout << "note: the file puts the regions on the wrong sides of " << p.size()
+                << (p.size() == 1 ? " patch" : " patches") << " (";
+      for(std::size_t i = 0; i < p.size() && i < 5; ++i)
+        std::cout << (i == 0 ? "" : ", ") << "'" << model.patch(p[i]).name << "'";
+      std::cout << (p.size() > 5 ? ", ...)" : ")") << ", against their triangles; the sides were taken "
+                << "from the geometry (each region's boundary faces out of it)\n";
+    }
+    if(!repair.flipped_triangles.empty())
+    {
+      const std::vector<std::size_t>& t = repair.flipped_triangles;
+      std::cout << "note: " << t.size() << (t.size() == 1 ? " triangle faces against the rest of its patch and "
+                                                    : " triangles face against the rest of their patch and ")
+                << (t.size() == 1 ? "was" : "were") << " turned over (";
+      for(std::size_t i = 0; i < t.size() && i < 3; ++i)
+        std::cout << (i == 0 ? "" : ", ") << model.where(model.triangle_source(t[i])) << "triangle " << t[i]
+                  << " of " << model.patch_label(model.patch_of_triangle(t[i]));
+      std::cout << (t.size() > 3 ? ", ...)" : ")") << "\n";
+    }
     BM::write_summary_text(std::cout, summary);
   }
   try

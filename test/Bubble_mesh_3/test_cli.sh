@@ -47,6 +47,48 @@ run "$tmp/needle.obj" --check
 check "needle body --check exits 0" test "$rc" -eq 0
 check "poor input angles point to --remesh-surfaces" contains "$out" "try --remesh-surfaces"
 
+# a GOCAD box of two layers whose contact is listed with the layers on the wrong sides (its
+# triangles face the upper layer, the file puts the lower one there): mended from the geometry
+python3 - "$tmp/split.ml" <<'PY'
+import sys
+h=0.75
+P=[(x,y,z) for z in (0,h,2) for y in (0,2) for x in (0,2)]
+def i(x,y,z): return P.index((x,y,z))
+def quad(q, n):  # two triangles over corners q (around), normal along n
+    u=[q[1][k]-q[0][k] for k in range(3)]; w=[q[2][k]-q[0][k] for k in range(3)]
+    c=[u[1]*w[2]-u[2]*w[1],u[2]*w[0]-u[0]*w[2],u[0]*w[1]-u[1]*w[0]]
+    if sum(c[k]*n[k] for k in range(3))<0: q=q[::-1]
+    a,b,cc,d=[i(*p) for p in q]
+    return [(a,b,cc),(a,cc,d)]
+def walls(z0,z1):
+    return (quad([(0,0,z0),(2,0,z0),(2,0,z1),(0,0,z1)],(0,-1,0))+quad([(0,2,z0),(2,2,z0),(2,2,z1),(0,2,z1)],(0,1,0))+
+            quad([(0,0,z0),(0,2,z0),(0,2,z1),(0,0,z1)],(-1,0,0))+quad([(2,0,z0),(2,2,z0),(2,2,z1),(2,0,z1)],(1,0,0)))
+sq=lambda z:[(0,0,z),(2,0,z),(2,2,z),(0,2,z)]
+parts={'lower_skin':quad(sq(0),(0,0,-1))+walls(0,h),'upper_skin':quad(sq(2),(0,0,1))+walls(h,2),'contact':quad(sq(h),(0,0,1))}
+names=['lower_skin','upper_skin','contact']
+o=open(sys.argv[1],'w')
+o.write('GOCAD Model3d 1\nHEADER {\nname: split box\n}\n')
+for n in names: o.write('TSURF %s\n'%n)
+for k,n in enumerate(names):
+    o.write('TFACE %d boundary %s\n'%(k+1,n))
+    for v in parts[n][0]: o.write('  %g %g %g\n'%P[v])
+o.write('REGION 4 Universe\n +1 +2 0\nREGION 5 Lower\n -1 +3 0\nREGION 6 Upper\n -2 -3 0\nEND\n')
+for n in names:
+    o.write('GOCAD TSurf 1\nHEADER {\nname: %s\n}\nTFACE\n'%n)
+    used=sorted({v for t in parts[n] for v in t})
+    for v in used: o.write('VRTX %d %g %g %g\n'%((v+1,)+P[v]))
+    for t in parts[n]: o.write('TRGL %d %d %d\n'%tuple(v+1 for v in t))
+    o.write('END\n')
+PY
+run "$tmp/split.ml" -o "$tmp/split.mesh" --summary-json "$tmp/split.json"
+check "contact listed on the wrong sides: meshed" test "$rc" -eq 0 -a -s "$tmp/split.mesh"
+check "contact listed on the wrong sides: a note names it" contains "$out" "wrong sides of 1 patch ('contact'), against their triangles"
+check "contact listed on the wrong sides: layer volumes from the geometry" python3 - "$tmp/split.json" <<'PY'
+import json,sys
+r={x['name']:x['volume'] for x in json.load(open(sys.argv[1]))['regions']}
+sys.exit(0 if abs(r['Lower']-3)<1e-12 and abs(r['Upper']-5)<1e-12 else 1)
+PY
+
 # surfaces re-meshed first: a unit cube whose bottom face has a needle along its diagonal
 # (a point 0.001 off it); the bundled model's volume mesh would take minutes re-meshed
 python3 - "$tmp/cube.obj" <<'PY'

@@ -7,7 +7,9 @@
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
 #include <CGAL/Bubble_mesh_3/IO/read_multibody_obj.h>
+#include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/geological_model_summary.h>
+#include <CGAL/Bubble_mesh_3/orient_patch_sides.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -538,6 +540,7 @@ void test_real_models()
     const double validate_time = timer.time(), validate_cpu = cpu.time();
     for(const std::string& p : problems) std::cerr << p << "\n";
     assert(problems.empty());
+    assert(BM::orient_patch_sides(m).empty()); // the geometry agrees with the file's sides
     const BM::Geological_model_summary s = BM::summarize_geological_model(m);
     std::cout << std::filesystem::path(f).filename().string() << ": " << s.number_of_regions << " regions, "
               << s.number_of_triangles << " triangles, " << s.surfaces_inside_regions.size()
@@ -555,6 +558,94 @@ void test_real_models()
   }
 }
 
+// Patch sides contradicted by the triangles are mended from the geometry; sides that are
+// right, and defects that swapping sides cannot mend, are left alone.
+void test_orient_patch_sides()
+{
+  auto volumes_are = [](const Model& m, std::initializer_list<double> expected) {
+    const std::vector<double> v = BM::region_volumes(m);
+    std::size_t r = 1;
+    for(double e : expected)
+    {
+      if(!(std::abs(v[r] - e) < 1e-12 * e)) std::cerr << "region " << r << ": volume " << v[r] << ", expected " << e << "\n";
+      assert(std::abs(v[r++] - e) < 1e-12 * e);
+    }
+  };
+  {
+    Model m = two_layers_with_fault();
+    assert(BM::orient_patch_sides(m).empty());
+    // the horizon (patch 1) with its two layers the wrong way round: each layer's boundary
+    // runs the horizon's edges the same way as its sides
+    m.set_patch_regions(1, m.patch(1).negative_region, m.patch(1).positive_region);
+    assert(!validation_message(m).empty());
+    const BM::Patch_side_repair repair = BM::orient_patch_sides(m);
+    assert(repair.swapped_patches == std::vector<std::size_t>{1} && repair.flipped_triangles.empty());
+    BM::validate_geological_model(m);
+    volumes_are(m, {9., 9.});
+    assert(m.patch(5).is_inside_region()); // the fault stays inside the lower layer
+    std::cout << "orient_patch_sides: horizon's sides swapped back\n";
+  }
+  {
+    // every patch of the two layers wrong but the fault: swapped back together
+    Model m = two_layers_with_fault();
+    for(std::size_t p = 0; p < 5; ++p)
+      m.set_patch_regions(p, m.patch(p).negative_region, m.patch(p).positive_region);
+    assert(BM::orient_patch_sides(m).swapped_patches == (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+    BM::validate_geological_model(m);
+    volumes_are(m, {9., 9.});
+  }
+  {
+    // a cavity listed with the rock on the wrong side: the shell enclosed by the outer one
+    // must face into the cavity
+    Builder b;
+    const std::size_t shell = b.model.add_region("Shell");
+    b.box(b.model.add_patch("Outer", 0, shell), Point(0, 0, 0), Point(3, 3, 3), 1);
+    b.box(b.model.add_patch("Cavity", 0, shell), Point(1, 1, 1), Point(2, 2, 2), 1, true);
+    assert(BM::orient_patch_sides(b.model).empty());
+    b.model.set_patch_regions(1, shell, 0);
+    assert(!validation_message(b.model).empty());
+    assert(BM::orient_patch_sides(b.model).swapped_patches == std::vector<std::size_t>{1});
+    BM::validate_geological_model(b.model);
+    volumes_are(b.model, {26.});
+    // a body inside the cavity and a second piece of the shell around it all, both with their
+    // sides wrong: the first piece, enclosed by both shells of the second, is no cavity
+    const std::size_t core = b.model.add_region("Core");
+    b.box(b.model.add_patch("Core skin", core, 0), Point(1.25, 1.25, 1.25), Point(1.75, 1.75, 1.75), 2);
+    b.box(b.model.add_patch("Outer 2", shell, 0), Point(-2, -2, -2), Point(5, 5, 5), 1);
+    b.box(b.model.add_patch("Cavity 2", shell, 0), Point(-1, -1, -1), Point(4, 4, 4), 1);
+    assert(BM::orient_patch_sides(b.model).swapped_patches == (std::vector<std::size_t>{2, 3}));
+    BM::validate_geological_model(b.model);
+    volumes_are(b.model, {26. + 343. - 125., 0.125});
+    std::cout << "orient_patch_sides: cavity and nested bodies mended\n";
+  }
+  {
+    // a triangle facing against the rest of its patch is turned over, validation then passes
+    Model m = read_bad("inconsistent_orientation.obj");
+    assert(!validation_message(m).empty());
+    const BM::Patch_side_repair r = BM::orient_patch_sides(m);
+    assert(r.swapped_patches.empty() && r.flipped_triangles == std::vector<std::size_t>{2});
+    BM::validate_geological_model(m);
+    volumes_are(m, {1.});
+    // the cavity sharing the outer shell's patch, facing out of the cavity: 12 triangles
+    // against 12, a tie that keeps the patch's sides and turns the cavity over
+    Model c = read_bad("wrong_cavity.obj");
+    const BM::Patch_side_repair rc = BM::orient_patch_sides(c);
+    assert(rc.swapped_patches.empty() && rc.flipped_triangles.size() == 12);
+    BM::validate_geological_model(c);
+    volumes_are(c, {26.});
+    // open boundaries are not touched
+    Model o = read_bad("open_boundary.obj");
+    const std::string before = validation_message(o);
+    assert(BM::orient_patch_sides(o).empty());
+    assert(validation_message(o) == before);
+    // the cube whose only region is listed on the side its normals point to
+    Model w = read_bad("wrong_side.ml");
+    assert(BM::orient_patch_sides(w).swapped_patches == std::vector<std::size_t>{0});
+    BM::validate_geological_model(w);
+    volumes_are(w, {1.});
+  }
+}
+
 } // namespace
 
 int main()
@@ -563,6 +654,7 @@ int main()
   test_bad_in_memory();
   test_triangle_pairs();
   test_bad_files();
+  test_orient_patch_sides();
   test_summary();
   test_contact_angles();
   test_timing();
