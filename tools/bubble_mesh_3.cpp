@@ -118,6 +118,11 @@ const char* usage_text =
 "                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
 "                             30-40 % on the models tried, for an aspect-ratio median up\n"
 "                             to 0.02 higher; 0 keeps the crowded initial bubbles (poor)\n"
+"  --regions FILE             for a .ts input of open surfaces (horizons, faults, box\n"
+"                             walls): the regions on either side of each TSurf object,\n"
+"                             one line 'OBJECT POSITIVE_REGION NEGATIVE_REGION' each\n"
+"                             ('outside' for the outside; the same region twice for a\n"
+"                             fault ending inside it). Without it each object is a body\n"
 "  --summary-json FILE        also write the model summary as JSON to FILE\n"
 "  --merge-tolerance T        merge points closer than T times the bounding-box\n"
 "                             diagonal (default 0: merge exactly coincident points only)\n"
@@ -137,6 +142,7 @@ struct Options
   bool check = false;
   bool quiet = false;
   std::string summary_json;
+  std::string regions;
   double merge_tolerance = 0.;
   bool sliver_removal = true;
   bool collapse_steiner_points = true;
@@ -158,6 +164,11 @@ struct Options
   bool size_grading_given = false;
   bool refine_ribbons = false;
 };
+
+bool is_tsurf_file(const std::string& f)
+{
+  return f.size() > 3 && (f.compare(f.size() - 3, 3, ".ts") == 0 || f.compare(f.size() - 3, 3, ".TS") == 0);
+}
 
 [[noreturn]] void usage_error(const std::string& msg)
 {
@@ -203,6 +214,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--seed") o.seed = unsigned(parse_double(a, value(a)));
     else if(a == "-q" || a == "--quiet") o.quiet = true;
     else if(a == "--summary-json") o.summary_json = value(a);
+    else if(a == "--regions") o.regions = value(a);
     else if(a == "--merge-tolerance") o.merge_tolerance = parse_double(a, value(a));
     else if(a == "--no-sliver-removal") o.sliver_removal = false;
     else if(a == "--keep-steiner-points") o.collapse_steiner_points = false;
@@ -248,6 +260,9 @@ Options parse_options(int argc, char** argv)
   }
   if(o.input.empty()) usage_error("no input file given");
   if(o.merge_tolerance < 0) usage_error("--merge-tolerance must not be negative");
+  if(!o.regions.empty() && !is_tsurf_file(o.input))
+    usage_error("--regions assigns regions to the objects of a GOCAD TSurf (.ts) file, and '" + o.input +
+                "' is not one (a .ml file lists its regions itself; an .obj file has one body per group)");
   if((o.size > 0. || o.relative_size > 0.) && !o.remesh_surfaces)
     usage_error("--size is the target of --remesh-surfaces: give both");
   if(o.layer_elements_given && !o.remesh_surfaces)
@@ -280,8 +295,12 @@ int main(int argc, char** argv)
   try
   {
     timer.start();
-    BM::IO::read_geological_model(opt.input, model,
-                                  BM::parameters::merge_tolerance(opt.merge_tolerance));
+    if(opt.regions.empty())
+      BM::IO::read_geological_model(opt.input, model, BM::parameters::merge_tolerance(opt.merge_tolerance));
+    else
+      BM::IO::read_geological_model(opt.input, model,
+                                    BM::parameters::region_assignment_file(
+                                      opt.regions, BM::parameters::merge_tolerance(opt.merge_tolerance)));
     // a file whose region sides contradict its triangles is mended from the geometry
     repair = BM::orient_patch_sides(model);
     BM::validate_geological_model(model);
@@ -290,6 +309,10 @@ int main(int argc, char** argv)
   catch(const BM::Geological_model_error& e)
   {
     std::cerr << "bubble_mesh_3: invalid input: " << e.what() << "\n";
+    if(is_tsurf_file(opt.input) && opt.regions.empty() && std::string(e.what()).find("not closed") != std::string::npos)
+      std::cerr << "hint: each TSurf object was taken as the closed surface of a body; for open surfaces "
+                   "(horizons, faults, box walls) give --regions FILE with a line 'OBJECT POSITIVE_REGION "
+                   "NEGATIVE_REGION' per object\n";
     return 1;
   }
   catch(const std::exception& e)

@@ -89,6 +89,24 @@ r={x['name']:x['volume'] for x in json.load(open(sys.argv[1]))['regions']}
 sys.exit(0 if abs(r['Lower']-3)<1e-12 and abs(r['Upper']-5)<1e-12 else 1)
 PY
 
+# a TSurf file of open surfaces (a box's walls and a fault inside it): --regions says which
+# regions each object separates; without it the error points there
+ts="$root/test/Bubble_mesh_3/data/io/box_and_fault.ts"
+run "$ts" --check
+check "open TSurf objects without --regions: invalid input" test "$rc" -eq 1
+check "open TSurf objects without --regions: hint names --regions" contains "$err" "give --regions FILE"
+printf '# object positive negative\nbox outside rock\nfault rock rock\n' > "$tmp/regions.txt"
+run "$ts" --regions "$tmp/regions.txt" -o "$tmp/bf.mesh" --summary-json "$tmp/bf.json"
+check "--regions: meshed" test "$rc" -eq 0 -a -s "$tmp/bf.mesh"
+check "--regions: one region 'rock' with the fault inside it" python3 - "$tmp/bf.json" <<'PY'
+import json,sys
+s=json.load(open(sys.argv[1]))
+r=s['regions']
+sys.exit(0 if len(r)==1 and r[0]['name']=='rock' and abs(r[0]['volume']-1)<1e-12 else 1)
+PY
+run "$model" --regions "$tmp/regions.txt" --check
+check "--regions on an OBJ input is a usage error" test "$rc" -eq 2
+
 # surfaces re-meshed first: a unit cube whose bottom face has a needle along its diagonal
 # (a point 0.001 off it); the bundled model's volume mesh would take minutes re-meshed
 python3 - "$tmp/cube.obj" <<'PY'

@@ -370,6 +370,28 @@ static void test_small_files()
     std::cout << "  Model3d Elevation and Depth: horizon between 'lower' and 'upper' on the right sides\n";
   }
   {
+    // other writers' spellings: `GOCAD Tsurf` (Seismic Unix), `HEADER{`, Windows line ends
+    std::ifstream f(test_data + "two_boxes.ts");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    std::string text = ss.str(), variant;
+    for(std::size_t i = 0; i < text.size(); ++i)
+    {
+      if(text.compare(i, 11, "GOCAD TSurf") == 0) { variant += "GOCAD Tsurf"; i += 10; continue; }
+      if(text.compare(i, 8, "HEADER {") == 0) { variant += "HEADER{"; i += 7; continue; }
+      if(text[i] == '\n') variant += '\r';
+      variant += text[i];
+    }
+    assert(variant.find("Tsurf") != std::string::npos && variant.find("HEADER{") != std::string::npos);
+    std::istringstream is(variant);
+    Model m, ref;
+    BIO::read_gocad_tsurf(is, "variant.ts", m);
+    BIO::read_gocad_tsurf(test_data + "two_boxes.ts", ref);
+    assert(m.number_of_triangles() == ref.number_of_triangles() && m.number_of_points() == ref.number_of_points());
+    assert(CGAL::Bubble_mesh_3::region_volumes(m) == CGAL::Bubble_mesh_3::region_volumes(ref));
+    std::cout << "  TSurf spelt 'Tsurf', 'HEADER{', CRLF: read the same\n";
+  }
+  {
     // region assignment: a box and a fault inside it
     Model m;
     BIO::read_gocad_tsurf(test_data + "box_and_fault.ts", m,

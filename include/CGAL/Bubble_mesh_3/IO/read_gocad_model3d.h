@@ -109,7 +109,7 @@ void read_gocad_model3d(std::istream& is, const std::string& name, Geological_mo
   while(in.next() && in.empty()) {}
   if(in.line_number() == 0 || in.empty())
     throw Geological_model_error(name + ": empty file (no 'GOCAD Model3d' line)");
-  if(in.size() < 2 || in[0] != "GOCAD" || in[1] != "Model3d")
+  if(in.size() < 2 || !internal::equal_ignoring_case(in[0], "GOCAD") || !internal::equal_ignoring_case(in[1], "Model3d"))
     in.error_here("not a GOCAD Model3d file: it starts with " + internal::quoted(in.line()));
 
   struct Tface
@@ -225,9 +225,9 @@ void read_gocad_model3d(std::istream& is, const std::string& name, Geological_mo
   while(in.next())
   {
     if(in.empty() || in[0][0] == '#') continue;
-    if(in.size() < 2 || in[0] != "GOCAD")
+    if(in.size() < 2 || !internal::equal_ignoring_case(in[0], "GOCAD"))
       in.error_here("expected a 'GOCAD TSurf' object, got " + internal::quoted(in.line()));
-    if(in[1] != "TSurf") in.error_here("unsupported GOCAD object " + internal::quoted(in[1]) + " in a Model3d file");
+    if(!internal::equal_ignoring_case(in[1], "TSurf")) in.error_here("unsupported GOCAD object " + internal::quoted(in[1]) + " in a Model3d file");
     objects.emplace_back();
     internal::read_gocad_tsurf_object(in, objects.back());
     if(!object_of_name.emplace(objects.back().name, objects.size() - 1).second)

@@ -134,9 +134,9 @@ void read_gocad_tsurf(std::istream& is, const std::string& name, Geological_mode
   while(in.next())
   {
     if(in.empty() || in[0][0] == '#') continue;
-    if(in.size() < 2 || in[0] != "GOCAD")
+    if(in.size() < 2 || !internal::equal_ignoring_case(in[0], "GOCAD"))
       in.error_here("expected a 'GOCAD TSurf' object, got " + internal::quoted(in.line()));
-    if(in[1] != "TSurf") in.error_here("unsupported GOCAD object " + internal::quoted(in[1]) + " in a TSurf file");
+    if(!internal::equal_ignoring_case(in[1], "TSurf")) in.error_here("unsupported GOCAD object " + internal::quoted(in[1]) + " in a TSurf file");
     objects.emplace_back();
     internal::read_gocad_tsurf_object(in, objects.back());
     internal::Gocad_tsurf_object& obj = objects.back();

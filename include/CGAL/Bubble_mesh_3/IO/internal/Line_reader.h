@@ -55,6 +55,15 @@ inline std::string point_text(double x, double y, double z)
   return s.str();
 }
 
+// `a` and `b` equal but for case: object types are spelled `TSurf` or `Tsurf` by different writers
+inline bool equal_ignoring_case(std::string_view a, std::string_view b)
+{
+  if(a.size() != b.size()) return false;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+  return true;
+}
+
 inline std::string trim(std::string_view s)
 {
   const char* ws = " \t\r\n\v\f";
