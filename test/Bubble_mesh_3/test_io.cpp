@@ -444,6 +444,14 @@ static void test_small_files()
   expect_error("truncated file", read("truncated.ml"), {"truncated.ml:67:", "vertex 10"});
   expect_error("garbage text", read("garbage.ml"), {"garbage.ml:1:", "not a GOCAD Model3d file"});
   expect_error("binary bytes", read("binary.ml"), {"binary.ml:"});
+  expect_error("only the Universe", [&m] {
+    // two squares that close nothing, both sides the outside
+    std::istringstream is("GOCAD Model3d 1\nTSURF a\nTFACE 1 none a\n 0 0 0\n 1 0 0\n 1 1 0\n"
+                          "REGION 2 Universe\n +1 -1 0\nEND\nGOCAD TSurf 1\nHEADER {\nname: a\n}\nTFACE\n"
+                          "VRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 1 1 0\nVRTX 4 0 1 0\nTRGL 1 2 3\nTRGL 1 3 4\nEND\n");
+    BIO::read_gocad_model3d(is, "universe_only.ml", m);
+  }, {"universe_only.ml", "no REGION but the Universe", "no body to mesh"});
+
   expect_error("TRGL with a missing vertex", read("missing_vertex.ts"), {"missing_vertex.ts:22:", "vertex 99", "'lower'"});
   expect_error("NaN coordinate", read("nan_vertex.ts"), {"nan_vertex.ts:16:", "vertex 3", "'nan'"});
   expect_error("inf coordinate", read("inf_vertex.ml"), {"inf_vertex.ml:67:", "vertex 10", "'inf'"});

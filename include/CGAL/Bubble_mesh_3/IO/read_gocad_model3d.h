@@ -298,7 +298,12 @@ void read_gocad_model3d(std::istream& is, const std::string& name, Geological_mo
     if(lower == "universe" && !has_universe) { has_universe = true; continue; }
     model_region[r] = m.add_region(regions[r].name);
   }
-  if(m.number_of_regions() == 0) throw Geological_model_error(name + ": the Model3d header has no REGION");
+  if(m.number_of_regions() == 0)
+    throw Geological_model_error(
+      name + (has_universe ? ": the Model3d header has no REGION but the Universe (the outside): no body to mesh "
+                             "(surfaces that enclose no volume, e.g. not sealed against each other in the "
+                             "modelling tool)"
+                           : ": the Model3d header has no REGION"));
 
   std::vector<std::size_t> object_offset(objects.size() + 1, 0);
   for(std::size_t o = 0; o < objects.size(); ++o)
