@@ -325,6 +325,7 @@ int main(int argc, char** argv)
   if(!opt.quiet)
   {
     std::cout << "read and validated " << opt.input << " in " << timer.time() << " s\n";
+    for(const std::string& note : model.notes()) std::cout << "note: " << note << "\n";
     if(!repair.swapped_patches.empty())
     {
       const std::vector<std::size_t>& p = repair.swapped_patches;

@@ -444,6 +444,33 @@ static void test_small_files()
   expect_error("truncated file", read("truncated.ml"), {"truncated.ml:67:", "vertex 10"});
   expect_error("garbage text", read("garbage.ml"), {"garbage.ml:1:", "not a GOCAD Model3d file"});
   expect_error("binary bytes", read("binary.ml"), {"binary.ml:"});
+  {
+    // a part with the Universe on both sides (a fault running on beyond the box) is left out
+    std::ifstream f(test_data + "two_boxes.ml");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    std::string text = ss.str();
+    const std::size_t end = text.find("\nEND\n");
+    const std::size_t universe = text.find("REGION", text.find("TFACE"));
+    assert(end != std::string::npos && universe < end);
+    text.insert(universe, "TFACE 90 fault outer\n 5 0 0\n 6 0 0\n 6 1 1\n");
+    const std::size_t list_end = text.find(" 0", text.find("\n", text.find("Universe")));
+    text.insert(list_end, " +90 -90");
+    text += "GOCAD TSurf 1\nHEADER {\nname: outer\n}\nTFACE\nVRTX 1 5 0 0\nVRTX 2 6 0 0\nVRTX 3 6 1 1\n"
+            "VRTX 4 5 1 1\nTRGL 1 2 3\nTRGL 1 3 4\nEND\n";
+    text.insert(text.find("TSURF"), "TSURF outer\n");
+    std::istringstream is(text);
+    Model with, without;
+    BIO::read_gocad_model3d(is, "outer_part.ml", with);
+    BIO::read_gocad_model3d(test_data + "two_boxes.ml", without);
+    assert(with.notes().size() == 1 && with.notes()[0].find("TFACE 90") != std::string::npos &&
+           with.notes()[0].find("left out") != std::string::npos);
+    assert(with.number_of_patches() == without.number_of_patches() &&
+           with.number_of_triangles() == without.number_of_triangles() &&
+           with.number_of_points() == without.number_of_points());
+    std::cout << "  " << with.notes()[0] << "\n";
+  }
+
   expect_error("only the Universe", [&m] {
     // two squares that close nothing, both sides the outside
     std::istringstream is("GOCAD Model3d 1\nTSURF a\nTFACE 1 none a\n 0 0 0\n 1 0 0\n 1 1 0\n"

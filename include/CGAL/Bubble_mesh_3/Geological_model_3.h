@@ -151,6 +151,11 @@ public:
   /// the name of the file the model was read from
   const std::string& file_name() const { return file_name_; }
 
+  /// records a remark of a reader about the input: something it left out, for instance
+  void add_note(const std::string& note) { notes_.push_back(note); }
+  /// the readers' remarks, in the order they were made (the program prints them)
+  const std::vector<std::string>& notes() const { return notes_; }
+
   // ---- access ---------------------------------------------------------------
 
   /// number of points
@@ -240,6 +245,7 @@ private:
   std::vector<Patch> patches_;
   std::vector<Region> regions_;
   std::string file_name_;
+  std::vector<std::string> notes_;
 };
 
 } // namespace Bubble_mesh_3

@@ -72,7 +72,9 @@ parts, with VRTX/PVRTX and ATOM/PATOM vertices and TRGL triangles.
 - The (first) region named `Universe`, in any case, is the outside (region
   0); the other regions keep their names and their order. TSurf objects or
   sections that no header TFACE names are ignored.
-- A TFACE listed in two regions separates them. With `ZPOSITIVE Elevation`
+- A TFACE listed in two regions separates them. One listed with both signs
+  in the `Universe` lies outside the model (a fault running on beyond the
+  box): it is left out, with a note in `model.notes()`. With `ZPOSITIVE Elevation`
   (the default) the region listing it as `+id` lies on the side the key
   triangle's normal (right-hand rule) points to; with `ZPOSITIVE Depth` on
   the other side. A TFACE listed with both signs in one region is a surface
@@ -336,8 +338,6 @@ void read_gocad_model3d(std::istream& is, const std::string& name, Geological_mo
       const auto& b = tf.regions[0].second > 0 ? tf.regions[1] : tf.regions[0];
       plus = model_region[a.first];
       minus = model_region[b.first];
-      if(plus == 0 && minus == 0)
-        throw Geological_model_error(where + " has the Universe on both sides");
     }
     else if(tf.regions.size() == 1)
     {
@@ -350,6 +350,12 @@ void read_gocad_model3d(std::istream& is, const std::string& name, Geological_mo
     else
       throw Geological_model_error(where + " cannot be placed: it is listed as " + listing() +
                                    " (expected once with + and once with -)");
+    if(plus == 0 && minus == 0)
+    {
+      // a part outside the model (a fault running on beyond the box): nothing to mesh
+      m.add_note(where + " has the Universe on both sides: it lies outside the model and is left out");
+      continue;
+    }
     const bool flip = (key_sign[t] < 0) != z_is_depth;
     pos = flip ? minus : plus;
     neg = flip ? plus : minus;
