@@ -107,6 +107,28 @@ PY
 run "$model" --regions "$tmp/regions.txt" --check
 check "--regions on an OBJ input is a usage error" test "$rc" -eq 2
 
+# one body as STL (a scanner's or surface modeller's export): meshed, named after the file
+python3 - "$tmp/Dam.stl" <<'PY'
+import sys
+P=[(0,0,0),(40,0,0),(40,20,0),(0,20,0),(10,0,10),(30,0,10),(30,20,10),(10,20,10)]
+Q=[(0,3,2,1),(4,5,6,7),(0,1,5,4),(1,2,6,5),(2,3,7,6),(3,0,4,7)]  # outward
+with open(sys.argv[1],'w') as o:
+    o.write('solid dam\n')
+    for q in Q:
+        for t in ((q[0],q[1],q[2]),(q[0],q[2],q[3])):
+            o.write(' facet normal 0 0 0\n  outer loop\n')
+            for v in t: o.write('   vertex %g %g %g\n'%P[v])
+            o.write('  endloop\n endfacet\n')
+    o.write('endsolid dam\n')
+PY
+run "$tmp/Dam.stl" -o "$tmp/dam.mesh" --summary-json "$tmp/dam.json"
+check "STL body: meshed" test "$rc" -eq 0 -a -s "$tmp/dam.mesh"
+check "STL body: one region named after the file, its volume" python3 - "$tmp/dam.json" <<'PY'
+import json,sys
+r=json.load(open(sys.argv[1]))['regions']
+sys.exit(0 if len(r)==1 and r[0]['name']=='Dam' and abs(r[0]['volume']-6000)<1e-9 else 1)
+PY
+
 # surfaces re-meshed first: a unit cube whose bottom face has a needle along its diagonal
 # (a point 0.001 off it); the bundled model's volume mesh would take minutes re-meshed
 python3 - "$tmp/cube.obj" <<'PY'

@@ -12,6 +12,7 @@
 #include <CGAL/Bubble_mesh_3/IO/write_multibody_obj.h>
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_tsurf.h>
+#include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 #include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
 #include <CGAL/Bubble_mesh_3/IO/read_face_graphs.h>
 #include <CGAL/Bubble_mesh_3/IO/write_face_graphs.h>
@@ -392,6 +393,58 @@ static void test_small_files()
     std::cout << "  TSurf spelt 'Tsurf', 'HEADER{', CRLF: read the same\n";
   }
   {
+    // a single body as OFF (a quad per face, inward: turned outward), ASCII STL (points
+    // repeated per facet: merged) and ASCII PLY
+    const std::string off = binary_dir + "/test_io_Slab.off", stl = binary_dir + "/test_io_Slab.STL",
+                      ply = binary_dir + "/test_io_Slab.ply";
+    const double P[8][3] = {{0, 0, 0}, {4, 0, 0}, {4, 2, 0}, {0, 2, 0}, {0, 0, 1}, {4, 0, 1}, {4, 2, 1}, {0, 2, 1}};
+    const int Q[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 4, 0}}; // inward
+    {
+      std::ofstream o(off);
+      o << "OFF\n8 6 0\n";
+      for(const auto& p : P) o << p[0] << " " << p[1] << " " << p[2] << "\n";
+      for(const auto& q : Q) o << "4 " << q[0] << " " << q[1] << " " << q[2] << " " << q[3] << "\n";
+    }
+    {
+      std::ofstream o(stl);
+      o << "solid slab\n";
+      for(const auto& q : Q)
+        for(int k = 1; k < 3; ++k)
+        {
+          o << " facet normal 0 0 0\n  outer loop\n";
+          for(int c : {q[0], q[k + 1], q[k]}) o << "   vertex " << P[c][0] << " " << P[c][1] << " " << P[c][2] << "\n";
+          o << "  endloop\n endfacet\n";
+        }
+      o << "endsolid slab\n";
+    }
+    {
+      std::ofstream o(ply);
+      o << "ply\nformat ascii 1.0\nelement vertex 8\nproperty double x\nproperty double y\nproperty double z\n"
+           "element face 6\nproperty list uchar int vertex_indices\nend_header\n";
+      for(const auto& p : P) o << p[0] << " " << p[1] << " " << p[2] << "\n";
+      for(const auto& q : Q) o << "4 " << q[3] << " " << q[2] << " " << q[1] << " " << q[0] << "\n";
+    }
+    for(const std::string& f : {off, stl, ply})
+    {
+      Model m;
+      BIO::read_geological_model(f, m);
+      assert(m.number_of_regions() == 1 && m.region(1).name == "test_io_Slab");
+      assert(m.number_of_points() == 8 && m.number_of_triangles() == 12);
+      const std::vector<double> vol = CGAL::Bubble_mesh_3::region_volumes(m);
+      assert(std::abs(vol[1] - 8.) < 1e-12);
+      CGAL::Bubble_mesh_3::validate_geological_model(m);
+    }
+    std::cout << "  one body as OFF, STL and PLY: 8 points, 12 triangles, volume 8\n";
+    {
+      std::ofstream o(binary_dir + "/test_io_bad.off");
+      o << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+    }
+    Model m;
+    expect_error("OFF face with a vertex out of range",
+                 [&] { BIO::read_geological_model(binary_dir + "/test_io_bad.off", m); },
+                 {"test_io_bad.off"});
+  }
+  {
     // region assignment: a box and a fault inside it
     Model m;
     BIO::read_gocad_tsurf(test_data + "box_and_fault.ts", m,
@@ -484,7 +537,7 @@ static void test_small_files()
   expect_error("inf coordinate", read("inf_vertex.ml"), {"inf_vertex.ml:67:", "vertex 10", "'inf'"});
   expect_error("REGION with an unknown TFACE", read("bad_region_tface.ml"),
                {"bad_region_tface.ml:28:", "REGION 'upper'", "TFACE 7"});
-  expect_error("unknown extension", read("two_boxes.stl"), {"two_boxes.stl", "'.stl'", ".ml", ".ts", ".obj"});
+  expect_error("unknown extension", read("two_boxes.step"), {"two_boxes.step", "'.step'", ".ml", ".ts", ".obj", ".stl"});
   expect_error("missing file", read("no_such_file.ml"), {"no_such_file.ml", "cannot open"});
   expect_error("truncated in the header", [&] {
     std::ifstream f(test_data + "two_boxes.ml");

@@ -12,6 +12,7 @@
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_tsurf.h>
 #include <CGAL/Bubble_mesh_3/IO/read_multibody_obj.h>
+#include <CGAL/Bubble_mesh_3/IO/read_single_body.h>
 
 #include <cctype>
 #include <string>
@@ -25,7 +26,8 @@ namespace IO {
 
 Reads the geological model in `filename`, choosing the reader by the file's
 extension (case-insensitive): `.ml` `read_gocad_model3d()`, `.ts`
-`read_gocad_tsurf()`, `.obj` `read_multibody_obj()`. The named parameters
+`read_gocad_tsurf()`, `.obj` `read_multibody_obj()`, `.off`, `.ply` and
+`.stl` `read_single_body()` (one body). The named parameters
 are passed on (`merge_tolerance` for all, `region_assignment` and
 `region_assignment_file` for `.ts`).
 
@@ -44,10 +46,11 @@ void read_geological_model(const std::string& filename, Geological_model_3<GeomT
   if(ext == "ml") read_gocad_model3d(filename, model, np);
   else if(ext == "ts") read_gocad_tsurf(filename, model, np);
   else if(ext == "obj") read_multibody_obj(filename, model, np);
+  else if(ext == "off" || ext == "ply" || ext == "stl") read_single_body(filename, model, np);
   else
     throw Geological_model_error("cannot read '" + filename + "': " +
                                  (ext.empty() ? std::string("no file extension") : "unknown extension '." + ext + "'") +
-                                 " (known: .ml GOCAD Model3d, .ts GOCAD TSurf, .obj multi-body OBJ)");
+                                 " (known: .ml GOCAD Model3d, .ts GOCAD TSurf, .obj multi-body OBJ; .off, .ply, .stl one body)");
 }
 
 } // namespace IO
