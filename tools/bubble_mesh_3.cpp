@@ -525,7 +525,7 @@ int main(int argc, char** argv)
           std::cout << (k ? ", " : "") << "'" << model.region(bare[k]).name << "'";
         std::cout << (bare.size() > 5 ? ", ..." : "") << "): they are no thicker than their surface triangles are wide, "
                   << "so their tetrahedra join surface points only; for a finer mesh, "
-                  << (report.surfaces_remeshed ? "give a smaller --size" : "re-mesh the surfaces at a smaller size (--remesh-surfaces --size S)")
+                  << (report.surfaces_remeshed ? "give a smaller --size" : "re-mesh the surfaces at a smaller size (--remesh-surfaces --size S, e.g. --size 2% for edges of 2 % of the model's diagonal)")
                   << "\n";
       }
     }

@@ -269,7 +269,7 @@ run "$tmp/cube.obj" -o "$tmp/p.mesh" --quality-json "$tmp/qp.json" --threads 2
 check "planar pieces: exits 0" test "$rc" -eq 0
 check "planar pieces: summary line" contains "$out" "planar pieces: 6 of 6 re-triangulated"
 check "a region with no room for bubbles is named, with the way to a finer mesh" contains "$out" "note: 1 of 1 regions got no bubble inside ('Cube')"
-check "... which is --remesh-surfaces --size" contains "$out" "(--remesh-surfaces --size S)"
+check "... which is --remesh-surfaces --size" contains "$out" "(--remesh-surfaces --size S, e.g. --size 2%"
 run "$tmp/cube.obj" --planar-angle-bound 45
 check "--planar-angle-bound 45 exits 2" test "$rc" -eq 2
 check "--planar-angle-bound 45 named" contains "$err" "--planar-angle-bound"
