@@ -498,6 +498,32 @@ static void test_small_files()
   expect_error("garbage text", read("garbage.ml"), {"garbage.ml:1:", "not a GOCAD Model3d file"});
   expect_error("binary bytes", read("binary.ml"), {"binary.ml:"});
   {
+    // key points written with about seven digits: found when a single triangle is that close
+    std::ifstream f(test_data + "two_boxes.ml");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    const std::string text = ss.str();
+    const std::size_t key = text.find("\n", text.find("TFACE 3")) + 1; // "  0.0 0.0 1.0"
+    assert(text.compare(key, 14, "  0.0 0.0 1.0\n") == 0);
+    for(const char* z : {"1.000001", "1.001"})
+    {
+      std::string t = text;
+      t.replace(key, 14, std::string("  0.0 0.0 ") + z + "\n");
+      std::istringstream is(t);
+      Model k;
+      if(std::string(z) == "1.000001")
+      {
+        BIO::read_gocad_model3d(is, "rounded_key.ml", k);
+        assert(k.number_of_patches() == 3 && k.patch(2).name == "horizon");
+      }
+      else
+        expect_error("key triangle 1e-3 off", [&] { BIO::read_gocad_model3d(is, "far_key.ml", k); },
+                     {"far_key.ml:", "key triangle of TFACE 3", "is in none of the"});
+    }
+    std::cout << "  key triangle rounded to 7 digits: found; 1e-3 off: an error\n";
+  }
+
+  {
     // a part with the Universe on both sides (a fault running on beyond the box) is left out
     std::ifstream f(test_data + "two_boxes.ml");
     std::stringstream ss;

@@ -32,20 +32,34 @@ namespace internal {
 // +1 if the part has the key triangle with the same orientation, -1 reversed, 0 not found.
 // Exact coordinates first; then within `tol` (headers written with fewer digits).
 inline int find_key_triangle(const Gocad_tsurf_object& obj, const Gocad_tsurf_object::Part& part,
-                             const std::array<std::array<double, 3>, 3>& key, double tol)
+                             const std::array<std::array<double, 3>, 3>& key, double tol, double loose)
 {
   auto close = [&](const std::array<double, 3>& a, const std::array<double, 3>& b, double t) {
     return std::abs(a[0] - b[0]) <= t && std::abs(a[1] - b[1]) <= t && std::abs(a[2] - b[2]) <= t;
   };
+  auto match = [&](const std::array<std::size_t, 3>& tri, double t) {
+    for(int s = 0; s < 3; ++s)
+    {
+      if(!close(obj.points[tri[s]], key[0], t)) continue;
+      if(close(obj.points[tri[(s + 1) % 3]], key[1], t) && close(obj.points[tri[(s + 2) % 3]], key[2], t)) return 1;
+      if(close(obj.points[tri[(s + 2) % 3]], key[1], t) && close(obj.points[tri[(s + 1) % 3]], key[2], t)) return -1;
+    }
+    return 0;
+  };
   for(double t : {0., tol})
     for(const auto& tri : part.triangles)
-      for(int s = 0; s < 3; ++s)
-      {
-        if(!close(obj.points[tri[s]], key[0], t)) continue;
-        if(close(obj.points[tri[(s + 1) % 3]], key[1], t) && close(obj.points[tri[(s + 2) % 3]], key[2], t)) return 1;
-        if(close(obj.points[tri[(s + 2) % 3]], key[1], t) && close(obj.points[tri[(s + 1) % 3]], key[2], t)) return -1;
-      }
-  return 0;
+      if(const int sign = match(tri, t)) return sign;
+  // key points written with fewer digits than the vertices (single precision, say):
+  // taken only when one triangle alone is that close
+  if(loose < 0.) return 0;
+  int found = 0;
+  for(const auto& tri : part.triangles)
+    if(const int sign = match(tri, loose))
+    {
+      if(found != 0) return 0;
+      found = sign;
+    }
+  return found;
 }
 
 } // namespace internal
@@ -66,9 +80,11 @@ parts, with VRTX/PVRTX and ATOM/PATOM vertices and TRGL triangles.
 - Each part becomes a patch named after its surface, with a suffix `_k`
   (k = 1, 2, ...) only when the surface has several parts.
 - Parts are matched to header TFACEs by their key triangle (exact
-  coordinates, else within 1e-7 of the surface's bounding-box diagonal),
-  trying the part of the same rank first; a key triangle found in no part is
-  an error.
+  coordinates, else within 1e-7 of the surface's bounding-box diagonal, else
+  - for key points written with about seven digits - within 1e-6 of the
+  largest coordinate if a single triangle of the part is that close), trying
+  the part of the same rank first; a key triangle found in no part is an
+  error.
 - The (first) region named `Universe`, in any case, is the outside (region
   0); the other regions keep their names and their order. TSurf objects or
   sections that no header TFACE names are ignored.
@@ -259,17 +275,26 @@ void read_gocad_model3d(std::istream& is, const std::string& name, Geological_mo
       for(int d = 0; d < 3; ++d) diag2 += (hi[d] - lo[d]) * (hi[d] - lo[d]);
     }
     const double tol = 1e-7 * std::sqrt(diag2);
+    double largest = 0; // coordinate, for key points rounded to about seven digits
+    for(const P3& p : obj.points)
+      for(int d = 0; d < 3; ++d) largest = (std::max)(largest, std::abs(p[d]));
+    const double loose = tol + 1e-6 * largest;
     std::vector<long long> part_used(obj.parts.size(), -1);
     for(std::size_t rank = 0; rank < st.second.size(); ++rank)
     {
       const std::size_t t = st.second[rank];
       int sign = 0;
       std::size_t part = 0;
-      if(rank < obj.parts.size()) sign = internal::find_key_triangle(obj, obj.parts[rank], tfaces[t].key, tol);
-      if(sign != 0) part = rank;
-      else
-        for(part = 0; part < obj.parts.size(); ++part)
-          if(part != rank && (sign = internal::find_key_triangle(obj, obj.parts[part], tfaces[t].key, tol)) != 0) break;
+      // the close matches everywhere first, the loose one only then
+      for(double l : {-1., loose})
+      {
+        if(rank < obj.parts.size()) sign = internal::find_key_triangle(obj, obj.parts[rank], tfaces[t].key, tol, l);
+        if(sign != 0) part = rank;
+        else
+          for(part = 0; part < obj.parts.size(); ++part)
+            if(part != rank && (sign = internal::find_key_triangle(obj, obj.parts[part], tfaces[t].key, tol, l)) != 0) break;
+        if(sign != 0) break;
+      }
       if(sign == 0)
         throw Geological_model_error(
           in.where(tfaces[t].line) + "the key triangle of TFACE " + std::to_string(tfaces[t].id) + " " +
