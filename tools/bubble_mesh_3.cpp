@@ -166,6 +166,11 @@ struct Options
   bool refine_ribbons = false;
 };
 
+bool is_gocad_model3d(const std::string& f)
+{
+  return f.size() > 3 && (f.compare(f.size() - 3, 3, ".ml") == 0 || f.compare(f.size() - 3, 3, ".ML") == 0);
+}
+
 bool is_tsurf_file(const std::string& f)
 {
   return f.size() > 3 && (f.compare(f.size() - 3, 3, ".ts") == 0 || f.compare(f.size() - 3, 3, ".TS") == 0);
@@ -335,7 +340,12 @@ int main(int argc, char** argv)
       for(std::size_t i = 0; i < p.size() && i < 5; ++i)
         std::cout << (i == 0 ? "" : ", ") << "'" << model.patch(p[i]).name << "'";
       std::cout << (p.size() > 5 ? ", ...)" : ")") << ", against their triangles; the sides were taken "
-                << "from the geometry (each region's boundary faces out of it)\n";
+                << "from the geometry (each region's boundary faces out of it)";
+      std::size_t between_regions = 0;
+      for(const auto& patch : model.patches()) between_regions += patch.is_inside_region() ? 0 : 1;
+      if(p.size() == between_regions && is_gocad_model3d(opt.input))
+        std::cout << "; as every patch was, the file's ZPOSITIVE (Elevation or Depth) is likely the wrong one";
+      std::cout << "\n";
     }
     if(!repair.flipped_triangles.empty())
     {

@@ -89,6 +89,12 @@ r={x['name']:x['volume'] for x in json.load(open(sys.argv[1]))['regions']}
 sys.exit(0 if abs(r['Lower']-3)<1e-12 and abs(r['Upper']-5)<1e-12 else 1)
 PY
 
+# the same box with every sign the other way round, as a wrong ZPOSITIVE makes it
+sed -e 's/^ +1 +2 0$/ -1 -2 0/' -e 's/^ -1 +3 0$/ +1 +3 0/' -e 's/^ -2 -3 0$/ +2 -3 0/' "$tmp/split.ml" > "$tmp/split_all.ml"
+run "$tmp/split_all.ml" --check
+check "every sign wrong: valid after mending" test "$rc" -eq 0
+check "every sign wrong: ZPOSITIVE named" contains "$out" "the file's ZPOSITIVE (Elevation or Depth) is likely the wrong one"
+
 # a TSurf file of open surfaces (a box's walls and a fault inside it): --regions says which
 # regions each object separates; without it the error points there
 ts="$root/test/Bubble_mesh_3/data/io/box_and_fault.ts"
