@@ -95,6 +95,17 @@ run "$tmp/split_all.ml" --check
 check "every sign wrong: valid after mending" test "$rc" -eq 0
 check "every sign wrong: ZPOSITIVE named" contains "$out" "the file's ZPOSITIVE (Elevation or Depth) is likely the wrong one"
 
+# the contact listed as +3 by both layers: its sides come from the geometry
+sed -e 's/^ -2 -3 0$/ -2 +3 0/' "$tmp/split.ml" > "$tmp/split_same.ml"
+run "$tmp/split_same.ml" --check --summary-json "$tmp/split_same.json"
+check "same sign in both regions: valid after mending" test "$rc" -eq 0
+check "same sign in both regions: a note says so" contains "$out" "is listed with the same sign in both its regions"
+check "same sign in both regions: layer volumes from the geometry" python3 - "$tmp/split_same.json" <<'PY'
+import json,sys
+r={x['name']:x['volume'] for x in json.load(open(sys.argv[1]))['regions']}
+sys.exit(0 if abs(r['Lower']-3)<1e-12 and abs(r['Upper']-5)<1e-12 else 1)
+PY
+
 # a TSurf file of open surfaces (a box's walls and a fault inside it): --regions says which
 # regions each object separates; without it the error points there
 ts="$root/test/Bubble_mesh_3/data/io/box_and_fault.ts"

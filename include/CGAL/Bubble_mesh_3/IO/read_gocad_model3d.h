@@ -96,7 +96,9 @@ parts, with VRTX/PVRTX and ATOM/PATOM vertices and TRGL triangles.
   the other side. A TFACE listed with both signs in one region is a surface
   inside that region (a fault ending inside it); one listed in a single
   region only separates it from the outside if the file has no `Universe`
-  region, else it lies inside that region.
+  region, else it lies inside that region. One listed with the same sign in
+  two regions gets the first on its positive side and a note: its sides are
+  for `orient_patch_sides()` to decide from the geometry.
 - Coordinates are kept as they are in the file; coincident points (contacts
   are stored once per surface) are merged.
 
@@ -369,6 +371,15 @@ void read_gocad_model3d(std::istream& is, const std::string& name, Geological_mo
       plus = model_region[tf.regions[0].first];
       minus = has_universe ? plus : 0;
       if(tf.regions[0].second < 0) std::swap(plus, minus);
+    }
+    else if(tf.regions.size() == 2 && tf.regions[0].first != tf.regions[1].first)
+    {
+      // the same sign in both regions: one of them is wrong; either way round will
+      // do, since orient_patch_sides() takes the sides from the geometry
+      plus = model_region[tf.regions[0].first];
+      minus = model_region[tf.regions[1].first];
+      m.add_note(where + " is listed with the same sign in both its regions (" + listing() +
+                 "): its sides are left to the geometry");
     }
     else if(tf.regions.empty())
       throw Geological_model_error(where + " is listed in no REGION");
