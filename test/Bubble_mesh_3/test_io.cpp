@@ -12,6 +12,7 @@
 #include <CGAL/Bubble_mesh_3/IO/write_multibody_obj.h>
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_model3d.h>
 #include <CGAL/Bubble_mesh_3/IO/read_gocad_tsurf.h>
+#include <CGAL/Bubble_mesh_3/orient_patch_sides.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 #include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
 #include <CGAL/Bubble_mesh_3/IO/read_face_graphs.h>
@@ -590,8 +591,21 @@ static void test_small_files()
     std::istringstream is(text);
     BIO::read_gocad_model3d(is, "edited.ml", out);
   };
-  expect_error("TFACE with the same sign twice", [&] { read_edited("  -2  +3\n", "  -2  -3\n", m); },
-               {"edited.ml:19:", "TFACE 3", "'horizon'", "REGION 'lower' as -3", "REGION 'upper' as -3"});
+  {
+    // the same sign in both regions: read with a note, the sides left to the geometry
+    Model same;
+    read_edited("  -2  +3\n", "  -2  -3\n", same);
+    assert(same.notes().size() == 1);
+    const std::string& note = same.notes()[0];
+    for(const char* part : {"edited.ml:19:", "TFACE 3", "'horizon'", "REGION 'lower' as -3", "REGION 'upper' as -3",
+                            "same sign"})
+      assert(note.find(part) != std::string::npos);
+    CGAL::Bubble_mesh_3::orient_patch_sides(same);
+    CGAL::Bubble_mesh_3::validate_geological_model(same);
+    const std::vector<double> vol = CGAL::Bubble_mesh_3::region_volumes(same);
+    assert(std::abs(vol[1] - 1) < 1e-12 && std::abs(vol[2] - 1) < 1e-12);
+    std::cout << "  " << note << "; volumes 1 and 1 after orient_patch_sides()\n";
+  }
   expect_error("TFACE in no REGION", [&] { read_edited("  -1  -3  0\nREGION 6  upper \n  -2  +3\n", "  -1  0\nREGION 6  upper \n  -2\n", m); },
                {"edited.ml:19:", "TFACE 3", "in no REGION"});
   {
