@@ -384,6 +384,7 @@ static void test_small_files()
       if(text[i] == '\n') variant += '\r';
       variant += text[i];
     }
+    variant = "\xEF\xBB\xBF" + variant; // and a UTF-8 byte order mark
     assert(variant.find("Tsurf") != std::string::npos && variant.find("HEADER{") != std::string::npos);
     std::istringstream is(variant);
     Model m, ref;
@@ -391,7 +392,7 @@ static void test_small_files()
     BIO::read_gocad_tsurf(test_data + "two_boxes.ts", ref);
     assert(m.number_of_triangles() == ref.number_of_triangles() && m.number_of_points() == ref.number_of_points());
     assert(CGAL::Bubble_mesh_3::region_volumes(m) == CGAL::Bubble_mesh_3::region_volumes(ref));
-    std::cout << "  TSurf spelt 'Tsurf', 'HEADER{', CRLF: read the same\n";
+    std::cout << "  TSurf spelt 'Tsurf', 'HEADER{', CRLF, byte order mark: read the same\n";
   }
   {
     // a single body as OFF (a quad per face, inward: turned outward), ASCII STL (points

@@ -91,6 +91,8 @@ public:
     }
     ++line_number_;
     if(!line_.empty() && line_.back() == '\r') line_.pop_back();
+    // the byte order mark Windows editors put at the start of UTF-8 files
+    if(line_number_ == 1 && line_.compare(0, 3, "\xEF\xBB\xBF") == 0) line_.erase(0, 3);
     if(line_.find('\0') != std::string::npos)
       error_here("binary data (a NUL byte) in a text file");
     tokens_.clear();
