@@ -335,7 +335,8 @@ int main(int argc, char** argv)
     if(!repair.swapped_patches.empty())
     {
       const std::vector<std::size_t>& p = repair.swapped_patches;
-      std::cout << "note: the file puts the regions on the wrong sides of " << p.size()
+      std::cout << "note: " << (opt.regions.empty() ? std::string("the file") : "the regions file '" + opt.regions + "'")
+                << " puts the regions on the wrong sides of " << p.size()
                 << (p.size() == 1 ? " patch" : " patches") << " (";
       for(std::size_t i = 0; i < p.size() && i < 5; ++i)
         std::cout << (i == 0 ? "" : ", ") << "'" << model.patch(p[i]).name << "'";

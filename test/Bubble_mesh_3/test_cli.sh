@@ -121,6 +121,10 @@ s=json.load(open(sys.argv[1]))
 r=s['regions']
 sys.exit(0 if len(r)==1 and r[0]['name']=='rock' and abs(r[0]['volume']-1)<1e-12 else 1)
 PY
+printf 'box rock outside\nfault rock rock\n' > "$tmp/regions_swapped.txt"
+run "$ts" --regions "$tmp/regions_swapped.txt" --check
+check "--regions with the box's sides swapped: mended" test "$rc" -eq 0
+check "--regions with the box's sides swapped: the note names the regions file" contains "$out" "the regions file '$tmp/regions_swapped.txt' puts the regions on the wrong sides of 1 patch ('box')"
 run "$model" --regions "$tmp/regions.txt" --check
 check "--regions on an OBJ input is a usage error" test "$rc" -eq 2
 
