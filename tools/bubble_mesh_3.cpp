@@ -166,15 +166,9 @@ struct Options
   bool refine_ribbons = false;
 };
 
-bool is_gocad_model3d(const std::string& f)
-{
-  return f.size() > 3 && (f.compare(f.size() - 3, 3, ".ml") == 0 || f.compare(f.size() - 3, 3, ".ML") == 0);
-}
+bool is_gocad_model3d(const std::string& f) { return BM::IO::internal::file_extension(f) == "ml"; }
 
-bool is_tsurf_file(const std::string& f)
-{
-  return f.size() > 3 && (f.compare(f.size() - 3, 3, ".ts") == 0 || f.compare(f.size() - 3, 3, ".TS") == 0);
-}
+bool is_tsurf_file(const std::string& f) { return BM::IO::internal::file_extension(f) == "ts"; }
 
 [[noreturn]] void usage_error(const std::string& msg)
 {

@@ -38,11 +38,7 @@ template <class GeomTraits, class CGAL_NP_TEMPLATE_PARAMETERS>
 void read_geological_model(const std::string& filename, Geological_model_3<GeomTraits>& model,
                            const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
-  const std::size_t slash = filename.find_last_of("/\\");
-  const std::size_t dot = filename.find_last_of('.');
-  std::string ext;
-  if(dot != std::string::npos && (slash == std::string::npos || dot > slash)) ext = filename.substr(dot + 1);
-  for(char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = internal::file_extension(filename);
   if(ext == "ml") read_gocad_model3d(filename, model, np);
   else if(ext == "ts") read_gocad_tsurf(filename, model, np);
   else if(ext == "obj") read_multibody_obj(filename, model, np);

@@ -65,8 +65,7 @@ void read_single_body(const std::string& filename, Geological_model_3<GeomTraits
   const std::size_t slash = filename.find_last_of("/\\");
   const std::string base = slash == std::string::npos ? filename : filename.substr(slash + 1);
   const std::size_t dot = base.find_last_of('.');
-  std::string ext = dot == std::string::npos ? std::string() : base.substr(dot + 1);
-  for(char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = internal::file_extension(base);
   const std::string body = dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
 
   std::vector<Point_3> points;

@@ -181,6 +181,17 @@ private:
   std::vector<std::string_view> tokens_;
 };
 
+// the extension of a file name, lower case and without the dot ("" when its last part has none)
+inline std::string file_extension(const std::string& filename)
+{
+  const std::size_t slash = filename.find_last_of("/\\");
+  const std::size_t dot = filename.find_last_of('.');
+  std::string ext;
+  if(dot != std::string::npos && (slash == std::string::npos || dot > slash)) ext = filename.substr(dot + 1);
+  for(char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
 // opens `filename` for reading or throws a message that names it and says why
 inline void open_for_reading(std::ifstream& is, const std::string& filename)
 {
