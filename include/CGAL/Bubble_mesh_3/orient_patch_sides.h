@@ -7,7 +7,7 @@
 #define CGAL_BUBBLE_MESH_3_ORIENT_PATCH_SIDES_H
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
-#include <CGAL/Bbox_3.h>
+#include <CGAL/Bubble_mesh_3/internal/centred_coordinates.h>
 
 #include <algorithm>
 #include <array>
@@ -24,15 +24,11 @@ namespace internal {
 // Solid angle of the triangle (a, b, c) seen from the origin, signed by its
 // orientation (Van Oosterom and Strackee's formula); summed over a closed
 // surface it is +-4 pi inside and 0 outside.
-inline double solid_angle(const std::array<double, 3>& a, const std::array<double, 3>& b,
-                          const std::array<double, 3>& c)
+inline double solid_angle(const Centred_point& a, const Centred_point& b, const Centred_point& c)
 {
-  auto dot = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  };
+  auto dot = [](const Centred_point& u, const Centred_point& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
   const double la = std::sqrt(dot(a, a)), lb = std::sqrt(dot(b, b)), lc = std::sqrt(dot(c, c));
-  const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                     a[2] * (b[0] * c[1] - b[1] * c[0]);
+  const double det = triple_product(a, b, c);
   const double den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
   return 2. * std::atan2(det, den);
 }
@@ -86,20 +82,13 @@ oriented as documented, nothing is changed.
 template <class GeomTraits>
 Patch_side_repair orient_patch_sides(Geological_model_3<GeomTraits>& model)
 {
-  typedef std::array<double, 3> P3;
+  typedef internal::Centred_point P3;
   const std::size_t nt = model.number_of_triangles();
   if(nt == 0) return Patch_side_repair();
 
-  // coordinates relative to the box centre: real models sit far from the origin
-  const Bbox_3 box = bbox_3(model.points().begin(), model.points().end());
-  const P3 centre{{0.5 * (box.xmin() + box.xmax()), 0.5 * (box.ymin() + box.ymax()), 0.5 * (box.zmin() + box.zmax())}};
+  const P3 centre = internal::box_centre(model);
   std::vector<P3> pts(model.number_of_points());
-  for(std::size_t i = 0; i < pts.size(); ++i)
-  {
-    const auto& p = model.point(i);
-    pts[i] = {{CGAL::to_double(p.x()) - centre[0], CGAL::to_double(p.y()) - centre[1],
-               CGAL::to_double(p.z()) - centre[2]}};
-  }
+  for(std::size_t i = 0; i < pts.size(); ++i) pts[i] = internal::centred(model.point(i), centre);
 
   // a side: a triangle as part of the boundary of one region
   struct Side
@@ -177,9 +166,7 @@ Patch_side_repair orient_patch_sides(Geological_model_3<GeomTraits>& model)
       const std::size_t s = stack.back();
       stack.pop_back();
       const auto& tri = model.triangle(sides[s].triangle);
-      const P3 &a = pts[tri[0]], &b = pts[tri[1]], &c = pts[tri[2]];
-      const double v = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                        a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.;
+      const double v = internal::signed_volume(pts[tri[0]], pts[tri[1]], pts[tri[2]]);
       volume += flipped[s] ? -v : v;
       for(const auto& n : next[s])
       {

@@ -7,6 +7,7 @@
 #define CGAL_BUBBLE_MESH_3_VALIDATE_GEOLOGICAL_MODEL_H
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
+#include <CGAL/Bubble_mesh_3/internal/centred_coordinates.h>
 #include <CGAL/Bubble_mesh_3/internal/union_find.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_error.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
@@ -533,23 +534,17 @@ private:
 
   // The signed volume of a set of sides, relative to the point `o` (the centre of the model's
   // box, so that far-off coordinates lose no digits), and their bounding box.
-  std::pair<double, Bbox_3> volume_and_box(const std::vector<std::size_t>& side_ids, const double o[3]) const
+  std::pair<double, Bbox_3> volume_and_box(const std::vector<std::size_t>& side_ids,
+                                           const internal::Centred_point& o) const
   {
     double vol = 0.;
     Bbox_3 box;
     for(std::size_t s : side_ids)
     {
-      double q[3][3];
-      for(int k = 0; k < 3; ++k)
-      {
-        const Point_3& p = m_.point(sides_[s].v[k]);
-        box += p.bbox();
-        q[k][0] = CGAL::to_double(p.x()) - o[0];
-        q[k][1] = CGAL::to_double(p.y()) - o[1];
-        q[k][2] = CGAL::to_double(p.z()) - o[2];
-      }
-      vol += (q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
-              q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0])) / 6.;
+      const Side& side = sides_[s];
+      for(int k = 0; k < 3; ++k) box += m_.point(side.v[k]).bbox();
+      vol += internal::signed_volume(internal::centred(m_.point(side.v[0]), o), internal::centred(m_.point(side.v[1]), o),
+                                     internal::centred(m_.point(side.v[2]), o));
     }
     return std::make_pair(vol, box);
   }
@@ -606,9 +601,7 @@ private:
       while(c1 < components.size() && sides_[components[c1].front()].region == r) ++c1;
       if(c1 - c0 > 1)
       {
-        const Bbox_3 model_box = bbox(m_);
-        const double o[3] = {0.5 * (model_box.xmin() + model_box.xmax()), 0.5 * (model_box.ymin() + model_box.ymax()),
-                             0.5 * (model_box.zmin() + model_box.zmax())};
+        const internal::Centred_point o = internal::box_centre(m_);
         std::vector<double> volume;
         std::vector<Bbox_3> box;
         for(std::size_t c = c0; c < c1; ++c)
