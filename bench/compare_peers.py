@@ -281,6 +281,24 @@ def mesher_output(kind, workdir, base):
 PHASES = [["tetgen-pA", "tetgen-pYA", "gmsh"], ["bubble", "bubble-keep"], ["tetgen-pq"], ["bubble-remesh"]]
 
 
+def phase_order(phase, contexts, done):
+    """The models in the order a phase visits them. The re-meshed runs take
+    5-15 times the surfaces-kept run of the same model: they go cheapest first
+    (by that run's time, else by input triangles), so that what is left of the
+    budget is spent on the rows that can finish, not on a large model killed
+    half-way while a small one is skipped."""
+    order = list(range(len(contexts)))
+    if "bubble-remesh" not in phase:
+        return order
+
+    def cost(i):
+        kept = [r for r in done[i] if r["key"] == "bubble" and r["status"] == "ok" and r["time_s"] is not None]
+        if kept:
+            return (0, kept[0]["time_s"])
+        return (1, contexts[i]["triangles"] if contexts[i]["triangles"] is not None else float("inf"))
+    return sorted(order, key=cost)
+
+
 def prepare_model(model, args, tools, out_dir):
     """The model's own numbers (volumes, from bubble_mesh_3 --check) and the peers' inputs."""
     name = model_name(model)
@@ -329,7 +347,11 @@ def run_row(ctx, key, args, tools, avail, deadline):
         row["error"] = "skipped: the time budget (--budget %g s) is used up" % args.budget
         print("%s %s" % (tag, row["error"]), flush=True)
         return row
-    run_timeout = min(args.bubble_timeout if kind == "bubble" else args.timeout, remaining)
+    if key == "bubble-remesh" and args.remesh_timeout is None:
+        run_timeout = remaining  # the last phase: nothing else waits for the time
+    else:
+        limit = args.remesh_timeout if key == "bubble-remesh" else (args.bubble_timeout if kind == "bubble" else args.timeout)
+        run_timeout = min(limit, remaining)
     wdir = os.path.join(mdir, key)
     if os.path.isdir(wdir):
         shutil.rmtree(wdir)
@@ -399,13 +421,16 @@ def run_row(ctx, key, args, tools, avail, deadline):
 
 
 def draw_histograms(ctx, rows, args, tools, out_dir):
-    """The side-by-side histograms of the model's measured meshes; the SVG's path, or None."""
+    """The side-by-side histograms of the model's measured meshes (and their sections through the
+    middle of the model, one above the other, in NAME_sections.svg); the histograms' path, or None."""
     measured = [r for r in rows if r["tets"] is not None]
     if not measured:
         return None
     svg = os.path.join(out_dir, ctx["name"] + ".svg")
+    sections = os.path.join(out_dir, ctx["name"] + "_sections.svg")
     names = [r["mesher"].replace(",", "") for r in measured]
-    s = run([tools["quality"]] + [r["mesh"] for r in measured] + ["--names", ",".join(names), "--svg", svg],
+    s = run([tools["quality"]] + [r["mesh"] for r in measured] +
+            ["--names", ",".join(names), "--svg", svg, "--section-svg", sections],
             ctx["mdir"], args.timeout, os.path.join(ctx["mdir"], "histograms.log"), use_time=False)
     if s["status"] != "ok":
         print("   histograms of %s: %s %s" % (ctx["name"], s["status"], s["reason"]))
@@ -480,9 +505,12 @@ def main():
     p.add_argument("--build-dir", default=os.path.join(REPO, "build-bench"),
                    help="CMake build folder with the programs (default: %(default)s)")
     p.add_argument("--out", default=None, help="output folder (default: BUILD_DIR/compare_peers)")
-    p.add_argument("--timeout", type=float, default=120.0, help="time limit per run in seconds (default: %(default)s)")
+    p.add_argument("--timeout", type=float, default=150.0, help="time limit per run in seconds (default: %(default)s)")
     p.add_argument("--bubble-timeout", type=float, default=None,
                    help="time limit per bubble_mesh_3 run in seconds (default: --timeout)")
+    p.add_argument("--remesh-timeout", type=float, default=None,
+                   help="time limit per bubble_mesh_3 --remesh-surfaces run in seconds (default: what is left "
+                        "of the budget; these runs come last, cheapest model first)")
     p.add_argument("--budget", type=float, default=800.0,
                    help="time budget of the whole run in seconds: a run gets at most what is left, and runs "
                         "are skipped (and say so) once it is used up (default: %(default)s)")
@@ -518,10 +546,10 @@ def main():
     contexts = [prepare_model(m, args, tools, out_dir) for m in models]
     done = [[] for _ in models]  # rows per model
     for phase in PHASES:
-        for ctx, model_rows in zip(contexts, done):
+        for i in phase_order(phase, contexts, done):
             for key in phase:
                 if key in selected:
-                    model_rows.append(run_row(ctx, key, args, tools, avail, deadline))
+                    done[i].append(run_row(contexts[i], key, args, tools, avail, deadline))
     rows, svgs = [], {}
     for ctx, model_rows in zip(contexts, done):
         model_rows.sort(key=lambda r: MESHER_KEYS.index(r["key"]))

@@ -2,7 +2,7 @@
 # README command 1: install what is missing, build the programs, and mesh the bundled default model.
 # Usage: scripts/run_default.sh [bubble_mesh_3 options]
 # Without options it writes out/layered_model.{mesh,vtu,msh,inp} and the quality report
-# (out/layered_model_quality.json and .svg); with options it passes them on instead.
+# (out/layered_model_quality.json and .svg) and a vertical section (out/layered_model_section.svg); with options it passes them on instead.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/install_deps.sh"
@@ -14,6 +14,6 @@ if [ "$#" -eq 0 ]; then
   mkdir -p "$out"
   set -- -o "$out/layered_model.mesh" -o "$out/layered_model.vtu" -o "$out/layered_model.msh" \
          -o "$out/layered_model.inp" --quality-json "$out/layered_model_quality.json" \
-         --quality-svg "$out/layered_model_quality.svg"
+         --quality-svg "$out/layered_model_quality.svg" --section-svg "$out/layered_model_section.svg"
 fi
 exec "$root/build/tools/bubble_mesh_3" "$model" "$@"

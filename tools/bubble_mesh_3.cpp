@@ -13,11 +13,14 @@
 #include <CGAL/Bubble_mesh_3/IO/write_mesh.h>
 #include <CGAL/Bubble_mesh_3/IO/write_quality_report.h>
 #include <CGAL/Bubble_mesh_3/IO/write_svg_histograms.h>
+#include <CGAL/Bubble_mesh_3/IO/write_svg_section.h>
 #include <CGAL/Bubble_mesh_3/Remeshing_sizing_field.h>
 #include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h>
 #include <CGAL/make_bubble_mesh_3.h>
 #include <CGAL/Real_timer.h>
+
+#include "section_plane.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -62,6 +65,13 @@ const char* usage_text =
 "  --quality-json FILE        write the mesh quality report (per region) as JSON\n"
 "  --quality-svg FILE         draw the quality histograms (aspect ratio, face and\n"
 "                             dihedral angles, per region) as SVG\n"
+"  --section-svg FILE         draw a section of the mesh as SVG: the cut tetrahedra\n"
+"                             coloured by region (in magenta: a dihedral angle\n"
+"                             under 10 degrees), the input surfaces as lines; by\n"
+"                             default a vertical plane through the middle of the model,\n"
+"                             along its longer horizontal side\n"
+"  --section AXIS=V           the plane of --section-svg: x=V or y=V (vertical), z=V\n"
+"                             (horizontal, seen from above), V in model units\n"
 "  --threads N                number of threads (default: all cores); the mesh is the\n"
 "                             same whatever N\n"
 "  --seed S                   seed of the k-means clustering and of the sliver\n"
@@ -138,6 +148,9 @@ struct Options
   std::vector<std::string> outputs;
   std::string quality_json;
   std::string quality_svg;
+  std::string section_svg;
+  Section_choice section;
+  bool section_given = false;
   long threads = 0;
   unsigned seed = 0;
   bool check = false;
@@ -210,6 +223,14 @@ Options parse_options(int argc, char** argv)
     else if(a == "-o" || a == "--output") o.outputs.push_back(value(a));
     else if(a == "--quality-json") o.quality_json = value(a);
     else if(a == "--quality-svg") o.quality_svg = value(a);
+    else if(a == "--section-svg") o.section_svg = value(a);
+    else if(a == "--section")
+    {
+      const std::string v = value(a);
+      if(!parse_section_choice(v, o.section))
+        usage_error(std::string("--section takes ") + section_choice_syntax() + ", got '" + v + "'");
+      o.section_given = true;
+    }
     else if(a == "--threads") o.threads = long(parse_double(a, value(a)));
     else if(a == "--seed") o.seed = unsigned(parse_double(a, value(a)));
     else if(a == "-q" || a == "--quiet") o.quiet = true;
@@ -271,6 +292,8 @@ Options parse_options(int argc, char** argv)
     usage_error("--size-grading is a rule of --remesh-surfaces: give both");
   if(o.refine_ribbons && !o.remesh_surfaces)
     usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
+  if(o.section_given && o.section_svg.empty())
+    usage_error("--section chooses the plane of --section-svg: give both");
   if(o.threads < 0) usage_error("--threads must not be negative");
   if(!(o.planar_angle_bound >= 0. && o.planar_angle_bound <= 30.))
     usage_error("--planar-angle-bound must be in [0, 30] degrees");
@@ -366,6 +389,17 @@ int main(int argc, char** argv)
     return 1;
   }
   if(opt.check) return 0;
+
+  // the section's plane, checked against the model before the (long) meshing
+  K::Plane_3 cut_plane;
+  std::string section_title;
+  if(!opt.section_svg.empty())
+  {
+    std::string description, error;
+    if(!section_plane(BM::bbox(model), opt.section, cut_plane, description, error)) usage_error(error);
+    const std::size_t slash = opt.input.find_last_of("/\\");
+    section_title = (slash == std::string::npos ? opt.input : opt.input.substr(slash + 1)) + ": " + description;
+  }
 
 #ifdef CGAL_LINKED_WITH_TBB
   std::unique_ptr<tbb::global_control> threads;
@@ -550,6 +584,17 @@ int main(int argc, char** argv)
     if(!opt.quality_svg.empty())
       BM::IO::internal::write_atomically(opt.quality_svg,
                                          [&](std::ostream& os) { BM::IO::write_svg_histograms(os, quality); });
+    if(!opt.section_svg.empty())
+    {
+      std::vector<std::string> names(model.number_of_regions() + 1);
+      for(std::size_t r = 1; r <= model.number_of_regions(); ++r) names[r] = model.region(r).name;
+      BM::IO::internal::write_atomically(opt.section_svg, [&](std::ostream& os) {
+        BM::IO::write_svg_section(os, c3t3, cut_plane,
+                                  BM::parameters::region_names(names, BM::parameters::svg_title(section_title,
+                                  BM::parameters::highlight_dihedral_below(10.))));
+      });
+      if(!opt.quiet) std::cout << "wrote " << opt.section_svg << "\n";
+    }
   }
   catch(const std::exception& e)
   {

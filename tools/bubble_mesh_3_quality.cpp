@@ -10,6 +10,12 @@
 #include <CGAL/Bubble_mesh_3/IO/read_tet_mesh.h>
 #include <CGAL/Bubble_mesh_3/IO/write_quality_report.h>
 #include <CGAL/Bubble_mesh_3/IO/write_svg_histograms.h>
+#include <CGAL/Bubble_mesh_3/IO/write_svg_section.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include "section_plane.h"
+
+#include <algorithm>
 
 #include <cstdio>
 #include <cstdlib>
@@ -26,7 +32,7 @@ namespace {
 
 const char* usage =
   "Usage: bubble_mesh_3_quality MESH [MESH2 ...] [--json FILE] [--svg FILE] [--names A,B,...]\n"
-  "                             [--worst N]\n"
+  "                             [--worst N] [--section-svg FILE [--section AXIS=V]]\n"
   "\n"
   "Reads labelled tetrahedral meshes and reports their quality per region and for\n"
   "the whole model: tet and vertex counts, volume, dihedral angles (min, max, mean,\n"
@@ -50,6 +56,13 @@ const char* usage =
   "                  (one curve per region, or one per mesh with several meshes)\n"
   "  --names A,B     names of the meshes in tables and pictures (default: file names)\n"
   "  --worst N       how many worst tetrahedra to list (default 10)\n"
+"  --section-svg FILE  draw a section of each mesh (one above the other): the cut\n"
+"                  tetrahedra coloured by region, those with a dihedral angle under\n"
+"                  10 degrees in magenta, boundary triangles as lines; by default a\n"
+"                  vertical plane through the middle of the meshes along their\n"
+"                  longer horizontal side\n"
+"  --section AXIS=V  the plane of --section-svg: x=V, y=V (vertical) or z=V\n"
+"                  (horizontal, seen from above)\n"
   "  -h, --help      this help\n"
   "\n"
   "Exit status: 0 on success, 1 when a file cannot be read or written, 2 on bad usage.\n";
@@ -98,12 +111,38 @@ bool write_file(const std::string& filename, Write write)
   return true;
 }
 
+// the pictures one above the other in one picture (each a nested <svg> element)
+void write_stacked_svg(std::ostream& os, const std::vector<std::string>& parts)
+{
+  auto attribute = [](const std::string& svg, const std::string& name) {
+    const std::size_t at = svg.find(" " + name + "=\"");
+    return at == std::string::npos ? 0. : std::atof(svg.c_str() + at + name.size() + 3);
+  };
+  double width = 0., height = 0.;
+  for(const std::string& p : parts)
+  {
+    width = (std::max)(width, attribute(p, "width"));
+    height += attribute(p, "height");
+  }
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+     << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
+  double y = 0.;
+  for(const std::string& p : parts)
+  {
+    os << "<svg x=\"0\" y=\"" << y << "\" " << p.substr(5); // after "<svg "
+    y += attribute(p, "height");
+  }
+  os << "</svg>\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   std::vector<std::string> meshes, names;
-  std::string json, svg;
+  std::string json, svg, section_svg;
+  Section_choice section;
+  bool section_given = false;
   std::size_t worst = 10;
   for(int i = 1; i < argc; ++i)
   {
@@ -135,29 +174,58 @@ int main(int argc, char** argv)
       if(end == n.c_str() || *end != '\0' || v < 0) return usage_error("--worst: '" + n + "' is not a count");
       worst = std::size_t(v);
     }
+    else if(a == "--section-svg") { if(!value(section_svg)) return usage_error("--section-svg needs a file name"); }
+    else if(a == "--section")
+    {
+      std::string v;
+      if(!value(v) || !parse_section_choice(v, section))
+        return usage_error(std::string("--section takes ") + section_choice_syntax() + ", got '" + v + "'");
+      section_given = true;
+    }
     else if(a.size() > 1 && a[0] == '-')
       return usage_error("unknown option '" + a + "'");
     else
       meshes.push_back(a);
   }
   if(meshes.empty()) return usage_error("no mesh file given");
+  if(section_given && section_svg.empty()) return usage_error("--section chooses the plane of --section-svg: give both");
   if(!names.empty() && names.size() != meshes.size())
     return usage_error("--names gives " + std::to_string(names.size()) + " names for " +
                        std::to_string(meshes.size()) + " meshes");
 
   std::vector<BM::Mesh_quality_report> reports;
+  std::vector<BM::Labeled_tetrahedral_mesh_3> kept; // for the sections
+  CGAL::Bbox_3 box;
   for(std::size_t i = 0; i < meshes.size(); ++i)
   {
     try
     {
-      const BM::Labeled_tetrahedral_mesh_3 mesh = BM::IO::read_tet_mesh(meshes[i]);
+      BM::Labeled_tetrahedral_mesh_3 mesh = BM::IO::read_tet_mesh(meshes[i]);
       reports.push_back(BM::compute_mesh_quality(mesh, BM::parameters::number_of_worst_tetrahedra(worst)));
       reports.back().name = names.empty() ? meshes[i] : names[i];
+      if(!section_svg.empty())
+      {
+        for(const auto& p : mesh.points) box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+        kept.push_back(std::move(mesh));
+      }
     }
     catch(const std::exception& e)
     {
       std::cerr << "bubble_mesh_3_quality: error: " << e.what() << "\n";
       return 1;
+    }
+  }
+
+  // the section's plane, checked before anything is written
+  CGAL::Simple_cartesian<double>::Plane_3 plane;
+  std::string description;
+  if(!section_svg.empty())
+  {
+    std::string error;
+    if(!section_plane(box, section, plane, description, error))
+    {
+      std::cerr << "bubble_mesh_3_quality: " << error << "\n";
+      return 2;
     }
   }
 
@@ -174,5 +242,22 @@ int main(int argc, char** argv)
        else BM::IO::write_svg_histogram_comparison(os, reports);
      }))
     return 1;
+  if(!section_svg.empty())
+  {
+    std::vector<std::string> parts;
+    for(std::size_t i = 0; i < kept.size(); ++i)
+    {
+      std::ostringstream part;
+      BM::IO::write_svg_section(part, kept[i], plane,
+                                BM::parameters::svg_title(reports[i].name + ": " + description,
+                                BM::parameters::highlight_dihedral_below(10.)));
+      parts.push_back(part.str());
+    }
+    if(!write_file(section_svg, [&](std::ostream& os) {
+         if(parts.size() == 1) os << parts[0];
+         else write_stacked_svg(os, parts);
+       }))
+      return 1;
+  }
   return EXIT_SUCCESS;
 }

@@ -373,13 +373,14 @@ assert all(r['volume'] > 0 for r in regions)
 "
   fi
   # end to end: mesh the default model, several outputs, quality report
-  run "$model" -o "$tmp/m.mesh" -o "$tmp/m.msh" -o "$tmp/m.vtu" --quality-json "$tmp/q.json" --quality-svg "$tmp/q.svg" --threads 2
+  run "$model" -o "$tmp/m.mesh" -o "$tmp/m.msh" -o "$tmp/m.vtu" --quality-json "$tmp/q.json" --quality-svg "$tmp/q.svg" \
+      --section-svg "$tmp/s.svg" --threads 2
   check "meshing the default model exits 0" test "$rc" -eq 0
   check "progress line per stage" contains "$out" "tetrahedralization..."
   check "summary gives tetrahedra" contains "$out" "tetrahedra"
   check "summary gives triangles kept whole" contains "$out" "input triangles kept whole"
   check "summary reports sliver removal" contains "$out" "sliver removal: tetrahedra with a dihedral angle under 15"
-  for f in m.mesh m.msh m.vtu q.json q.svg; do
+  for f in m.mesh m.msh m.vtu q.json q.svg s.svg; do
     check "$f written" test -s "$tmp/$f"
     check "$f.tmp not left" test ! -e "$tmp/$f.tmp"
   done
@@ -398,6 +399,39 @@ for r in s['regions']:
   tets=$(awk '/^Tetrahedra/{getline; print $1; exit}' "$tmp/m.mesh")
   check "Medit file has tetrahedra" test "${tets:-0}" -gt 0
   check "summary tet count = Medit count" contains "$out" "mesh: $tets tetrahedra"
+
+  # the section: a vertical plane through the middle, cut cells of several regions named in the legend
+  if command -v python3 >/dev/null; then
+    check "section SVG cuts cells of several regions, legend names them, surfaces drawn" python3 -c "
+import re,json
+svg=open('$tmp/s.svg').read()
+assert 'section y = 300 (x to the right, z up)' in svg, svg[:400]
+fills=set(re.findall(r'class=\"cell\" fill=\"([^\"]+)\"', svg))
+assert len(fills) >= 4, fills
+assert svg.count('class=\"surface\"') > 10
+names=[r['name'] for r in json.load(open('$tmp/summary.json'))['regions']]
+assert sum(('>'+n+'<') in svg for n in names) >= 4, names
+"
+  fi
+  run "$model" -q --section-svg "$tmp/top.svg" --section z=350 --no-sliver-removal
+  check "--section z=350 exits 0" test "$rc" -eq 0
+  check "--section z=350 is a map view" grep -q "section z = 350 (seen from above" "$tmp/top.svg"
+  command -v python3 >/dev/null && check "section legend counts the outlined poor tetrahedra" python3 -c "
+import re
+svg=open('$tmp/top.svg').read()
+m=re.search(r'tetrahedra under 10 deg \((\d+) cut\)', svg)
+assert m, 'no legend entry for the poor tetrahedra'
+assert int(m.group(1)) == svg.count('class=\"poor-cell\"'), (m.group(1), svg.count('class=\"poor-cell\"'))
+"
+  run "$model" -q --section-svg "$tmp/miss.svg" --section x=5000 -o "$tmp/miss.mesh"
+  check "--section outside the model exits 2" test "$rc" -eq 2
+  check "--section outside the model gives the model's range" contains "$err" "misses the model: its x runs from 0 to 1000"
+  check "--section outside the model writes nothing" test ! -e "$tmp/miss.svg" -a ! -e "$tmp/miss.mesh"
+  run "$model" --section w=3 --section-svg "$tmp/w.svg"
+  check "--section w=3 exits 2" test "$rc" -eq 2
+  check "--section w=3 says what it takes" contains "$err" "x=V, y=V or z=V"
+  run "$model" --section y=10
+  check "--section without --section-svg exits 2" test "$rc" -eq 2
 
   # a real consumer: CalculiX solves the bundled model's Abaqus deck under its own weight
   if [ -x /usr/bin/python3 ] && command -v ccx >/dev/null; then

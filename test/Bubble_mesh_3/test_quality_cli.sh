@@ -652,6 +652,35 @@ expect_error "unknown option" 2 "unknown option '--frobnicate'" "$T/cube.mesh" -
 expect_error "names count" 2 "names for 1 meshes" "$T/cube.mesh" --names a,b
 "$Q" --help | grep -q '^Usage: bubble_mesh_3_quality' || fail "--help"
 
+# Sections of the cube: the default plane is y = 1/2 (x and y extents equal), which cuts the
+# 10 tets that have a vertex on y = 1 (c has y = 0.45: the two on the face y = 0 stay below);
+# 5 of them in each region. Two meshes: two pictures one above the other.
+count() { grep -o "$2" "$1" | wc -l; }
+if "$Q" "$T/cube.mesh" --section-svg "$T/sec.svg" > /dev/null 2> "$T/err.txt"; then
+  cells=$(count "$T/sec.svg" 'class="cell"')
+  regions=$(grep -o 'class="cell" fill="[^"]*"' "$T/sec.svg" | sort -u | wc -l)
+  if [ "$cells" -eq 10 ] && [ "$regions" -eq 2 ] && grep -q 'section y = 0.5 (x to the right, z up)' "$T/sec.svg"; then
+    ok "section of the cube: $cells cut cells in $regions regions"
+  else
+    fail "section of the cube: $cells cut cells in $regions regions (10 in 2 expected)"
+  fi
+else
+  fail "section of the cube: $(cat "$T/err.txt")"
+fi
+# z = 1/4 cuts the 2 tets on the face z = 0 and the 8 on the side faces, in each mesh
+if "$Q" "$T/cube.mesh" "$T/cube.node" --names a,b --section-svg "$T/two.svg" --section z=0.25 > /dev/null 2> "$T/err.txt" &&
+   [ "$(count "$T/two.svg" '<svg ')" -eq 3 ] && [ "$(count "$T/two.svg" 'class="cell"')" -eq 20 ] &&
+   grep -q '>b: section z = 0.25 (seen from above' "$T/two.svg"; then
+  ok "two sections one above the other, 10 cut cells each"
+else
+  fail "two sections: $(cat "$T/err.txt") $(count "$T/two.svg" '<svg ') svg elements, $(count "$T/two.svg" 'class="cell"') cells"
+fi
+expect_error "section plane outside the mesh" 2 "misses the model: its x runs from 0 to 1" \
+  "$T/cube.mesh" --section-svg "$T/miss.svg" --section x=5
+[ -e "$T/miss.svg" ] && fail "a section plane outside the mesh wrote its file"
+expect_error "bad section plane" 2 "x=V, y=V or z=V" "$T/cube.mesh" --section-svg "$T/b.svg" --section q=1
+expect_error "section plane without a file" 2 "give both" "$T/cube.mesh" --section y=0.5
+
 if [ "$failures" -ne 0 ]; then
   echo "test_quality_cli: $failures failure(s)"
   exit 1

@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/Bubble.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
+#include <CGAL/Bubble_mesh_3/mesh_quality.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,6 +34,7 @@ enum svg_title_t { svg_title };
 enum draw_cell_edges_t { draw_cell_edges };
 enum region_names_t { region_names };
 enum section_bubbles_t { section_bubbles };
+enum highlight_dihedral_below_t { highlight_dihedral_below };
 } // namespace internal_np
 
 namespace parameters {
@@ -48,6 +51,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, draw_cell_edges)
 /// \ingroup PkgBubbleMesh3IO
 /// `write_svg_section()`: the names of the regions for the legend, entry `r` for region `r` (default: numbers)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<std::string>, region_names)
+/// \ingroup PkgBubbleMesh3IO
+/// `write_svg_section()`: cut cells whose smallest dihedral angle is under this many degrees
+/// are drawn in magenta, and the legend counts them (default 0: none)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, highlight_dihedral_below)
 
 /// \ingroup PkgBubbleMesh3IO
 /// `write_svg_section()`: bubbles whose balls the plane cuts are drawn over the cells as
@@ -77,7 +84,7 @@ namespace internal {
 // of +z onto the plane unless the plane is nearly horizontal; then u = x, v = y).
 struct Svg_section_canvas
 {
-  struct Polygon { std::vector<std::array<double, 2> > p; int region; };
+  struct Polygon { std::vector<std::array<double, 2> > p; int region; bool poor; };
   struct Segment { std::array<double, 2> a, b; int patch; };
   struct Circle { std::array<double, 2> c; double r; int region; bool fixed; };
 
@@ -119,6 +126,10 @@ struct Svg_section_canvas
   {
     return {{CGAL::to_double(p.x()) - origin[0], CGAL::to_double(p.y()) - origin[1],
              CGAL::to_double(p.z()) - origin[2]}};
+  }
+  std::array<double, 3> rel(const std::array<double, 3>& p) const
+  {
+    return {{p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]}};
   }
   static double dot(const std::array<double, 3>& a, const std::array<double, 3>& b)
   {
@@ -162,7 +173,7 @@ struct Svg_section_canvas
     return pts;
   }
 
-  void add_cell(std::vector<std::array<double, 2> > pts, int region)
+  void add_cell(std::vector<std::array<double, 2> > pts, int region, bool poor = false)
   {
     if(pts.size() < 3) return;
     double cx = 0, cy = 0;
@@ -172,7 +183,7 @@ struct Svg_section_canvas
     std::sort(pts.begin(), pts.end(), [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
       return std::atan2(a[1] - cy, a[0] - cx) < std::atan2(b[1] - cy, b[0] - cx);
     });
-    polygons.push_back({pts, region});
+    polygons.push_back({pts, region, poor});
   }
   void add_facet(const std::vector<std::array<double, 2> >& pts, int patch)
   {
@@ -215,8 +226,9 @@ struct Svg_section_canvas
   }
 
   // legend: one entry per region present; names[r] when given
+  // `poor_label`: the legend's entry for the outlined (poor) cells, if any
   void write(std::ostream& os, double width, const std::string& title, bool cell_edges,
-             const std::vector<std::string>& names) const
+             const std::vector<std::string>& names, const std::string& poor_label = std::string()) const
   {
     double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
     auto grow = [&](const std::array<double, 2>& p, double r) {
@@ -233,12 +245,16 @@ struct Svg_section_canvas
     for(const Circle& c : circles) if(!c.fixed) regions.push_back(c.region);
     std::sort(regions.begin(), regions.end());
     regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
+    const std::size_t poor = std::size_t(std::count_if(polygons.begin(), polygons.end(),
+                                                       [](const Polygon& g) { return g.poor; }));
+    if(!poor_label.empty()) regions.push_back(-1); // the outline's entry, last
     const double margin = 10, top = title.empty() ? margin : 34, row = 18;
     std::vector<std::pair<std::string, std::array<double, 2> > > entries; // name, (x, row index)
     double lx = margin, rows = regions.empty() ? 0 : 1;
     for(int r : regions)
     {
-      const std::string name = r >= 0 && std::size_t(r) < names.size() && !names[std::size_t(r)].empty()
+      const std::string name = r < 0 ? poor_label + " (" + std::to_string(poor) + " cut)"
+                               : std::size_t(r) < names.size() && !names[std::size_t(r)].empty()
                                  ? names[std::size_t(r)] : "region " + std::to_string(r);
       const double w = 28 + 7 * double(name.size());
       if(lx > margin && lx + w > width - margin) { lx = margin; rows += 1; }
@@ -264,6 +280,15 @@ struct Svg_section_canvas
       for(const auto& p : g.p) os << X(p[0]) << ',' << Y(p[1]) << ' ';
       os << "\"/>\n";
     }
+    // poor cells filled in a colour no region or surface has (a sliver's cut can be too thin to see as an outline)
+    os << "</g>\n<g fill=\"#ff00ff\" stroke=\"#ff00ff\" stroke-width=\"1.6\" stroke-linejoin=\"round\">\n";
+    for(const Polygon& g : polygons)
+    {
+      if(!g.poor) continue;
+      os << "<polygon class=\"poor-cell\" points=\"";
+      for(const auto& p : g.p) os << X(p[0]) << ',' << Y(p[1]) << ' ';
+      os << "\"/>\n";
+    }
     os << "</g>\n<g stroke-width=\"2\" stroke-linecap=\"round\">\n";
     for(const Segment& s : segments)
       os << "<line class=\"surface\" stroke=\"" << patch_color(s.patch) << "\" x1=\"" << X(s.a[0]) << "\" y1=\""
@@ -281,13 +306,32 @@ struct Svg_section_canvas
     for(std::size_t i = 0; i < entries.size(); ++i)
     {
       const double ex = entries[i].second[0], ey = ly + row * entries[i].second[1];
-      os << "<rect x=\"" << num(ex) << "\" y=\"" << num(ey) << "\" width=\"12\" height=\"12\" stroke=\"#555555\" fill=\""
-         << region_color(regions[i]) << "\"/><text x=\"" << num(ex + 16) << "\" y=\"" << num(ey + 11)
+      os << "<rect x=\"" << num(ex) << "\" y=\"" << num(ey) << "\" width=\"12\" height=\"12\" stroke=\""
+         << (regions[i] < 0 ? "#ff00ff" : "#555555") << "\" fill=\""
+         << (regions[i] < 0 ? "#ff00ff" : region_color(regions[i])) << "\"/><text x=\"" << num(ex + 16) << "\" y=\"" << num(ey + 11)
          << "\" font-size=\"12\">" << text(entries[i].first) << "</text>\n";
     }
     os << "</svg>\n";
   }
 };
+
+// the picture of a canvas of cut cells, with the named parameters of `write_svg_section()`;
+// `default_names` name the legend's regions unless `region_names` is given
+template <class NamedParameters>
+void write_cell_section(std::ostream& os, const Svg_section_canvas& canvas, const NamedParameters& np,
+                        const std::vector<std::string>& default_names)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double poor_below = choose_parameter(get_parameter(np, internal_np::highlight_dihedral_below), 0.);
+  std::ostringstream poor_label;
+  if(poor_below > 0.) poor_label << "tetrahedra under " << poor_below << " deg";
+  canvas.write(os, choose_parameter(get_parameter(np, internal_np::svg_width), 900.),
+               choose_parameter(get_parameter(np, internal_np::svg_title), std::string()),
+               choose_parameter(get_parameter(np, internal_np::draw_cell_edges), true),
+               choose_parameter(get_parameter(np, internal_np::region_names), default_names),
+               poor_label.str());
+}
 
 } // namespace internal
 
@@ -337,6 +381,13 @@ normal points to, x to the right. The scale is the same in both directions.
     \cgalParamType{std::vector<std::string>}
     \cgalParamDefault{"region 1", "region 2", ...}
   \cgalParamNEnd
+  \cgalParamNBegin{highlight_dihedral_below}
+    \cgalParamDescription{cut cells whose smallest dihedral angle is under this many degrees are drawn in
+      magenta (a colour no region or surface has), and the legend counts them, so that a user sees where
+      the poor tetrahedra are}
+    \cgalParamType{double}
+    \cgalParamDefault{0 (none)}
+  \cgalParamNEnd
   \cgalParamNBegin{section_bubbles}
     \cgalParamDescription{bubbles drawn over the cells: every ball the plane cuts, as the circle of the
       cut, filled with its region's colour (surface bubbles in grey)}
@@ -357,12 +408,16 @@ void write_svg_section(std::ostream& os, const C3T3& c3t3, const Plane_3& plane,
   typedef typename Tr::Bare_point Point;
   const Tr& tr = c3t3.triangulation();
   const auto bare = tr.geom_traits().construct_point_3_object();
+  const double poor_below = choose_parameter(get_parameter(np, internal_np::highlight_dihedral_below), 0.);
   internal::Svg_section_canvas canvas(plane);
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
   {
     std::array<Point, 4> p;
     for(int i = 0; i < 4; ++i) p[std::size_t(i)] = bare(tr.point(c, i));
-    canvas.add_cell(canvas.cut(p), int(c3t3.subdomain_index(c)));
+    std::vector<std::array<double, 2> > cut = canvas.cut(p);
+    if(cut.size() < 3) continue;
+    const bool poor = poor_below > 0. && tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_angle < poor_below;
+    canvas.add_cell(std::move(cut), int(c3t3.subdomain_index(c)), poor);
   }
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
   {
@@ -377,10 +432,49 @@ void write_svg_section(std::ostream& os, const C3T3& c3t3, const Plane_3& plane,
   if(bubbles)
     for(const Bubble<K>& b : *bubbles)
       canvas.add_ball(b.center, b.radius, b.region == no_index ? 0 : int(b.region), b.is_fixed);
-  canvas.write(os, choose_parameter(get_parameter(np, internal_np::svg_width), 900.),
-               choose_parameter(get_parameter(np, internal_np::svg_title), std::string()),
-               choose_parameter(get_parameter(np, internal_np::draw_cell_edges), true),
-               choose_parameter(get_parameter(np, internal_np::region_names), std::vector<std::string>()));
+  internal::write_cell_section(os, canvas, np, std::vector<std::string>());
+}
+
+/*!
+\ingroup PkgBubbleMesh3IO
+
+Draws the plane section of a tetrahedral mesh read from a file (any mesher's,
+see `IO::read_tet_mesh()`) as `write_svg_section()` above draws a complex:
+cells by region label, boundary triangles by patch label, the legend named
+by `mesh.region_names` unless `region_names` is given. The named parameters
+are those above except `section_bubbles`.
+*/
+template <class Plane_3, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void write_svg_section(std::ostream& os, const Labeled_tetrahedral_mesh_3& mesh, const Plane_3& plane,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double poor_below = choose_parameter(get_parameter(np, internal_np::highlight_dihedral_below), 0.);
+  internal::Svg_section_canvas canvas(plane);
+  for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+  {
+    std::array<std::array<double, 3>, 4> p;
+    for(int i = 0; i < 4; ++i) p[std::size_t(i)] = mesh.points[mesh.tetrahedra[t][std::size_t(i)]];
+    std::vector<std::array<double, 2> > cut = canvas.cut(p);
+    if(cut.size() < 3) continue;
+    const bool poor = poor_below > 0. && tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_angle < poor_below;
+    canvas.add_cell(std::move(cut), t < mesh.regions.size() ? mesh.regions[t] : 0, poor);
+  }
+  for(std::size_t f = 0; f < mesh.boundary_triangles.size(); ++f)
+  {
+    std::array<std::array<double, 3>, 3> p;
+    for(int i = 0; i < 3; ++i) p[std::size_t(i)] = mesh.points[mesh.boundary_triangles[f][std::size_t(i)]];
+    canvas.add_facet(canvas.cut(p), f < mesh.boundary_patches.size() ? mesh.boundary_patches[f] - 1 : 0);
+  }
+  std::vector<std::string> names;
+  for(const auto& rn : mesh.region_names)
+    if(rn.first >= 0)
+    {
+      if(names.size() <= std::size_t(rn.first)) names.resize(std::size_t(rn.first) + 1);
+      names[std::size_t(rn.first)] = rn.second;
+    }
+  internal::write_cell_section(os, canvas, np, names);
 }
 
 /*!
