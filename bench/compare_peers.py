@@ -570,7 +570,8 @@ def main():
                                                      args.timeout, args.budget), "",
           markdown_table(rows), ""]
     for n, s in svgs.items():
-        md.append("Histograms of %s: %s\n" % (n, s))
+        sections = s[:-len(".svg")] + "_sections.svg"
+        md.append("Histograms of %s: %s%s\n" % (n, s, ("; sections: " + sections) if os.path.exists(sections) else ""))
     with open(os.path.join(out_dir, "compare_peers.md"), "w") as f:
         f.write("\n".join(md))
     print()
