@@ -179,8 +179,12 @@ private:
     return true;
   }
 
+  // The plan of collapsing v onto u, false when the collapse cannot be made or would
+  // leave more than `max_under` cells under the bound (it could not be kept). The link
+  // condition is left to the caller: it is the dearest check, and most plans fail on
+  // quality first.
   bool plan(Vertex_handle v, Vertex_handle u, const std::vector<Cell_handle>& star,
-            const std::map<Triple, Surface_patch_index>& complex_at_v, Plan& p) const
+            const std::map<Triple, Surface_patch_index>& complex_at_v, std::size_t max_under, Plan& p) const
   {
     p = Plan();
     p.u = u;
@@ -241,12 +245,14 @@ private:
       p.cells.push_back(cv);
       p.labels.push_back(l);
       if(!(l == Subdomain_index()))
+      {
         p.made.add(smallest_dihedral_angle(vertex_coordinates(tr_, cv[0]), vertex_coordinates(tr_, cv[1]),
                                            vertex_coordinates(tr_, cv[2]), vertex_coordinates(tr_, cv[3])),
                    bound_);
+        if(p.made.under_bound > max_under) return false;
+      }
     }
-    if(!open.empty()) return false; // not a closed star: a facet lost its other side
-    return link_condition(v, u, star);
+    return open.empty(); // else not a closed star: a facet lost its other side
   }
 
   bool collapse(Vertex_handle v)
@@ -274,7 +280,9 @@ private:
     bool found = false;
     for(Vertex_handle u : candidates)
     {
-      if(!plan(v, u, star, complex_at_v, p)) continue;
+      // a plan with more cells under the bound than the star, or than the best so far, is not kept
+      const std::size_t max_under = found ? (std::min)(old_star.under_bound, best.made.under_bound) : old_star.under_bound;
+      if(!plan(v, u, star, complex_at_v, max_under, p)) continue;
       // fewer cells under the bound and no more under 1 and 5 degrees, none
       // under the mesh's smallest angle; or as many, none worse than the
       // worst of the star
@@ -285,6 +293,7 @@ private:
       if(found && (p.made.under_bound > best.made.under_bound ||
                    (p.made.under_bound == best.made.under_bound && !(p.made.min_angle > best.made.min_angle))))
         continue;
+      if(!link_condition(v, u, star)) continue;
       best = p;
       found = true;
     }
