@@ -7,6 +7,7 @@
 // any mesher (this package, TetGen, Gmsh, ...), alone or side by side.
 
 #include <CGAL/Bubble_mesh_3/mesh_quality.h>
+#include <CGAL/Bubble_mesh_3/IO/internal/write_atomically.h>
 #include <CGAL/Bubble_mesh_3/IO/read_tet_mesh.h>
 #include <CGAL/Bubble_mesh_3/IO/write_quality_report.h>
 #include <CGAL/Bubble_mesh_3/IO/write_svg_histograms.h>
@@ -86,26 +87,13 @@ std::vector<std::string> split(const std::string& s, char sep)
 template <class Write>
 bool write_file(const std::string& filename, Write write)
 {
-  const std::string tmp = filename + ".tmp";
+  try
   {
-    std::ofstream os(tmp);
-    if(!os)
-    {
-      std::cerr << "bubble_mesh_3_quality: cannot write '" << tmp << "'\n";
-      return false;
-    }
-    write(os);
-    os.close();
-    if(!os)
-    {
-      std::cerr << "bubble_mesh_3_quality: error writing '" << tmp << "'\n";
-      std::remove(tmp.c_str());
-      return false;
-    }
+    BM::IO::internal::write_atomically(filename, write);
   }
-  if(std::rename(tmp.c_str(), filename.c_str()) != 0)
+  catch(const std::exception& e)
   {
-    std::cerr << "bubble_mesh_3_quality: cannot rename '" << tmp << "' to '" << filename << "'\n";
+    std::cerr << "bubble_mesh_3_quality: error: " << e.what() << "\n";
     return false;
   }
   return true;

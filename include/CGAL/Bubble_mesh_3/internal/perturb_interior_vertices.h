@@ -532,14 +532,17 @@ private:
       tr_.geom_traits().construct_point_3_object()(c->vertex(3)->point()));
     return coordinates(p);
   }
-  // the smallest angle and the aspect ratio of the tetrahedron made of point `p` and facet `f`
-  std::pair<double, double> cone_measures(const Vec3& p, const Facet& f) const
+  // the smallest angle and (when `with_ratio`, else 0) the aspect ratio of the tetrahedron
+  // made of point `p` and facet `f`
+  std::pair<double, double> cone_measures(const Vec3& p, const Facet& f, bool with_ratio) const
   {
     Vec3 q[3];
     for(int k = 0, j = 0; k < 4; ++k)
       if(k != f.second) q[j++] = coordinates(f.first->vertex(k));
-    return std::make_pair(smallest_dihedral_angle(p, q[0], q[1], q[2]), aspect_ratio(p, q[0], q[1], q[2]));
+    return std::make_pair(smallest_dihedral_angle(p, q[0], q[1], q[2]), with_ratio ? aspect_ratio(p, q[0], q[1], q[2]) : 0.);
   }
+  // the aspect ratio of a cell when the smoothing compares them (the perturbation does not)
+  double cell_ratio_if(Cell_handle c, bool with_ratio) const { return with_ratio ? cell_ratio(c) : 0.; }
 
   // A vertex can move if it is a volume vertex, on no complex facet, and all
   // its cells are finite and in one region. Sets `region`.
@@ -568,14 +571,25 @@ private:
     bool valid = false;
   };
 
+  // What `evaluate()` measures and when it may stop early: the smoothing compares
+  // aspect ratios; a perturbation candidate that cannot improve on what it replaces
+  // (`Cell_set_quality::improves_on()`) is dropped before all its cells are measured.
+  struct Evaluation_mode
+  {
+    bool ratios;
+    bool stop_when_hopeless;
+  };
+
   // Conflict zone of `p` in the triangulation without the vertex, checked
   // against the region and the complex, and the quality of what it makes.
+  // `hopeless` is set (and `valid` left false) when `mode.stop_when_hopeless` dropped it.
   void evaluate(Candidate& cand, const Subdomain_index& region, Cell_handle hint,
                 const std::vector<Cell_handle>& hole,
                 const std::unordered_map<Cell_handle, std::pair<double, double> >& hole_measures,
-                const Cell_set_quality& old_star) const
+                const Cell_set_quality& old_star, Evaluation_mode mode, bool& hopeless) const
   {
     cand.valid = false;
+    hopeless = false;
     const Weighted_point wp(cand.point, 0);
     Locate_type lt;
     int li, lj;
@@ -599,16 +613,23 @@ private:
     const Vec3 p = coordinates(cand.point);
     cand.made = Cell_set_quality();
     cand.destroyed = old_star;
+    // what is destroyed first: it sets what the made cells must beat
+    for(Cell_handle cc : cand.conflict_cells)
+      if(hole_measures.count(cc) == 0) cand.destroyed.add(cell_angle(cc), bound_, cell_ratio_if(cc, mode.ratios));
+    auto beaten = [&] {
+      return mode.stop_when_hopeless && (!(cand.made.min_angle > cand.destroyed.min_angle + angle_tolerance) ||
+                                         cand.made.under_bound > cand.destroyed.under_bound);
+    };
+    // (in this order: the smoothing's sums of ratios are compared to the last bit)
     for(const Facet& f : boundary)
     {
-      const std::pair<double, double> m = cone_measures(p, f);
+      const std::pair<double, double> m = cone_measures(p, f, mode.ratios);
       cand.made.add(m.first, bound_, m.second);
+      if(beaten()) { hopeless = true; return; } // angles only fall and counts only grow
     }
     std::unordered_set<Cell_handle> in_conflict(cand.conflict_cells.begin(), cand.conflict_cells.end());
     for(Cell_handle h : hole)
       if(in_conflict.count(h) == 0) cand.made.add(hole_measures.at(h).first, bound_, hole_measures.at(h).second);
-    for(Cell_handle cc : cand.conflict_cells)
-      if(hole_measures.count(cc) == 0) cand.destroyed.add(cell_angle(cc), bound_, cell_ratio(cc));
     cand.boundary_facet = boundary.front();
     cand.valid = true;
   }
@@ -628,7 +649,7 @@ private:
     for(Cell_handle c : star)
     {
       const double a = cell_angle(c);
-      old_star.add(a, bound_, cell_ratio(c));
+      old_star.add(a, bound_, 0.); // the perturbation compares angles only
       if(a < bound_) slivers.push_back(std::make_pair(a, c));
     }
     if(slivers.empty() && sliver_targets.empty()) return -1; // fixed meanwhile by another move
@@ -761,21 +782,24 @@ private:
     for(Cell_handle c : hole)
     {
       label_new_cell(c3t3_, c, region);
-      hole_measures[c] = std::make_pair(cell_angle(c), cell_ratio(c));
+      hole_measures[c] = std::make_pair(cell_angle(c), cell_ratio_if(c, smoothing));
     }
 
     // the original position: its conflict zone is the hole, and re-inserting
     // it gives back the original cells
     Candidate best;
     best.point = tr_.geom_traits().construct_point_3_object()(original);
-    evaluate(best, region, hole.front(), hole, hole_measures, old_star);
+    bool hopeless = false;
+    evaluate(best, region, hole.front(), hole, hole_measures, old_star, Evaluation_mode{smoothing, false}, hopeless);
     CGAL_assertion(best.valid && best.conflict_cells.size() == hole.size());
     bool improved = false;
     Candidate cand;
     for(const Vec3& t : targets)
     {
       cand.point = Bare_point(t[0], t[1], t[2]);
-      evaluate(cand, region, hole.front(), hole, hole_measures, old_star);
+      evaluate(cand, region, hole.front(), hole, hole_measures, old_star, Evaluation_mode{smoothing, !smoothing},
+               hopeless);
+      if(hopeless) continue; // could not have beaten what it replaces
       if(!cand.valid)
       {
         ++stats.number_of_candidates_rejected;
