@@ -397,8 +397,7 @@ int main(int argc, char** argv)
   {
     std::string description, error;
     if(!section_plane(BM::bbox(model), opt.section, cut_plane, description, error)) usage_error(error);
-    const std::size_t slash = opt.input.find_last_of("/\\");
-    section_title = (slash == std::string::npos ? opt.input : opt.input.substr(slash + 1)) + ": " + description;
+    section_title = BM::IO::internal::file_name_part(opt.input) + ": " + description;
   }
 
 #ifdef CGAL_LINKED_WITH_TBB

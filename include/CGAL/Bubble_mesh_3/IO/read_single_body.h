@@ -62,8 +62,7 @@ void read_single_body(const std::string& filename, Geological_model_3<GeomTraits
     std::ifstream is; // a clear message for a missing file
     internal::open_for_reading(is, filename);
   }
-  const std::size_t slash = filename.find_last_of("/\\");
-  const std::string base = slash == std::string::npos ? filename : filename.substr(slash + 1);
+  const std::string base = internal::file_name_part(filename);
   const std::size_t dot = base.find_last_of('.');
   const std::string ext = internal::file_extension(base);
   const std::string body = dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);

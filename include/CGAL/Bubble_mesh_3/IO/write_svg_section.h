@@ -89,6 +89,7 @@ struct Svg_section_canvas
   struct Circle { std::array<double, 2> c; double r; int region; bool fixed; };
 
   std::array<double, 3> origin{}, n{}, u{}, v{};
+  double poor_below = 0.; // cells with a smaller dihedral angle are poor (0: none is)
   std::vector<Polygon> polygons;
   std::vector<Segment> segments;
   std::vector<Circle> circles;
@@ -185,6 +186,15 @@ struct Svg_section_canvas
     });
     polygons.push_back({pts, region, poor});
   }
+  // a tetrahedron of `region` given by its corners: its cut, marked poor by `poor_below`
+  template <class Point>
+  void add_tetrahedron(const std::array<Point, 4>& p, int region)
+  {
+    std::vector<std::array<double, 2> > pts = cut(p);
+    if(pts.size() < 3) return;
+    const bool poor = poor_below > 0. && tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_angle < poor_below;
+    add_cell(std::move(pts), region, poor);
+  }
   void add_facet(const std::vector<std::array<double, 2> >& pts, int patch)
   {
     if(pts.size() == 2) segments.push_back({pts[0], pts[1], patch});
@@ -225,10 +235,9 @@ struct Svg_section_canvas
     return r;
   }
 
-  // legend: one entry per region present; names[r] when given
-  // `poor_label`: the legend's entry for the outlined (poor) cells, if any
+  // legend: one entry per region present; names[r] when given; the poor cells last
   void write(std::ostream& os, double width, const std::string& title, bool cell_edges,
-             const std::vector<std::string>& names, const std::string& poor_label = std::string()) const
+             const std::vector<std::string>& names) const
   {
     double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
     auto grow = [&](const std::array<double, 2>& p, double r) {
@@ -247,13 +256,18 @@ struct Svg_section_canvas
     regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
     const std::size_t poor = std::size_t(std::count_if(polygons.begin(), polygons.end(),
                                                        [](const Polygon& g) { return g.poor; }));
-    if(!poor_label.empty()) regions.push_back(-1); // the outline's entry, last
+    std::ostringstream poor_label;
+    if(poor_below > 0.)
+    {
+      poor_label << "tetrahedra under " << poor_below << " deg (" << poor << " cut)";
+      regions.push_back(-1); // the poor cells' entry
+    }
     const double margin = 10, top = title.empty() ? margin : 34, row = 18;
     std::vector<std::pair<std::string, std::array<double, 2> > > entries; // name, (x, row index)
     double lx = margin, rows = regions.empty() ? 0 : 1;
     for(int r : regions)
     {
-      const std::string name = r < 0 ? poor_label + " (" + std::to_string(poor) + " cut)"
+      const std::string name = r < 0 ? poor_label.str()
                                : std::size_t(r) < names.size() && !names[std::size_t(r)].empty()
                                  ? names[std::size_t(r)] : "region " + std::to_string(r);
       const double w = 28 + 7 * double(name.size());
@@ -315,7 +329,17 @@ struct Svg_section_canvas
   }
 };
 
-// the picture of a canvas of cut cells, with the named parameters of `write_svg_section()`;
+// a canvas for a section of cells, with the named parameters of `write_svg_section()`
+// that decide which cells are poor
+template <class Plane_3, class NamedParameters>
+Svg_section_canvas cell_section_canvas(const Plane_3& plane, const NamedParameters& np)
+{
+  Svg_section_canvas canvas(plane);
+  canvas.poor_below = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::highlight_dihedral_below), 0.);
+  return canvas;
+}
+// the picture of such a canvas, with the named parameters that decide how it looks;
 // `default_names` name the legend's regions unless `region_names` is given
 template <class NamedParameters>
 void write_cell_section(std::ostream& os, const Svg_section_canvas& canvas, const NamedParameters& np,
@@ -323,14 +347,10 @@ void write_cell_section(std::ostream& os, const Svg_section_canvas& canvas, cons
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const double poor_below = choose_parameter(get_parameter(np, internal_np::highlight_dihedral_below), 0.);
-  std::ostringstream poor_label;
-  if(poor_below > 0.) poor_label << "tetrahedra under " << poor_below << " deg";
   canvas.write(os, choose_parameter(get_parameter(np, internal_np::svg_width), 900.),
                choose_parameter(get_parameter(np, internal_np::svg_title), std::string()),
                choose_parameter(get_parameter(np, internal_np::draw_cell_edges), true),
-               choose_parameter(get_parameter(np, internal_np::region_names), default_names),
-               poor_label.str());
+               choose_parameter(get_parameter(np, internal_np::region_names), default_names));
 }
 
 } // namespace internal
@@ -408,16 +428,12 @@ void write_svg_section(std::ostream& os, const C3T3& c3t3, const Plane_3& plane,
   typedef typename Tr::Bare_point Point;
   const Tr& tr = c3t3.triangulation();
   const auto bare = tr.geom_traits().construct_point_3_object();
-  const double poor_below = choose_parameter(get_parameter(np, internal_np::highlight_dihedral_below), 0.);
-  internal::Svg_section_canvas canvas(plane);
+  internal::Svg_section_canvas canvas = internal::cell_section_canvas(plane, np);
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
   {
     std::array<Point, 4> p;
     for(int i = 0; i < 4; ++i) p[std::size_t(i)] = bare(tr.point(c, i));
-    std::vector<std::array<double, 2> > cut = canvas.cut(p);
-    if(cut.size() < 3) continue;
-    const bool poor = poor_below > 0. && tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_angle < poor_below;
-    canvas.add_cell(std::move(cut), int(c3t3.subdomain_index(c)), poor);
+    canvas.add_tetrahedron(p, int(c3t3.subdomain_index(c)));
   }
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
   {
@@ -448,18 +464,12 @@ template <class Plane_3, class NamedParameters = CGAL::parameters::Default_named
 void write_svg_section(std::ostream& os, const Labeled_tetrahedral_mesh_3& mesh, const Plane_3& plane,
                        const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const double poor_below = choose_parameter(get_parameter(np, internal_np::highlight_dihedral_below), 0.);
-  internal::Svg_section_canvas canvas(plane);
+  internal::Svg_section_canvas canvas = internal::cell_section_canvas(plane, np);
   for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
   {
     std::array<std::array<double, 3>, 4> p;
     for(int i = 0; i < 4; ++i) p[std::size_t(i)] = mesh.points[mesh.tetrahedra[t][std::size_t(i)]];
-    std::vector<std::array<double, 2> > cut = canvas.cut(p);
-    if(cut.size() < 3) continue;
-    const bool poor = poor_below > 0. && tetrahedron_quality(p[0], p[1], p[2], p[3]).min_dihedral_angle < poor_below;
-    canvas.add_cell(std::move(cut), t < mesh.regions.size() ? mesh.regions[t] : 0, poor);
+    canvas.add_tetrahedron(p, t < mesh.regions.size() ? mesh.regions[t] : 0);
   }
   for(std::size_t f = 0; f < mesh.boundary_triangles.size(); ++f)
   {

@@ -181,13 +181,19 @@ private:
   std::vector<std::string_view> tokens_;
 };
 
+// the last part of a path: the file name without its folders
+inline std::string file_name_part(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of("/\\");
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
 // the extension of a file name, lower case and without the dot ("" when its last part has none)
 inline std::string file_extension(const std::string& filename)
 {
-  const std::size_t slash = filename.find_last_of("/\\");
-  const std::size_t dot = filename.find_last_of('.');
-  std::string ext;
-  if(dot != std::string::npos && (slash == std::string::npos || dot > slash)) ext = filename.substr(dot + 1);
+  const std::string base = file_name_part(filename);
+  const std::size_t dot = base.find_last_of('.');
+  std::string ext = dot == std::string::npos ? std::string() : base.substr(dot + 1);
   for(char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
 }
