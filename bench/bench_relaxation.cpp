@@ -59,7 +59,8 @@ const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin LIST]\n"
   "       bench_relaxation alpha [MODEL ...] [--threads N] [--skin S] [--rounds]\n"
   "                            [--remesh-surfaces | --planar] [--repulsive] [--by-wall]\n"
-  "                            [--cell-edge-factor F] [--damping C] [--resting R]\n"
+  "                            [--cell-edge-factor F] [--graded-cells G]\n"
+  "                            [--damping C] [--resting R]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -84,7 +85,8 @@ const char* usage =
   "            share inside [10,14]. --rounds prints a line at the end of every\n"
   "            population round (region, changes, population, steps, last move).\n"
   "            --cell-edge-factor passes place_initial_bubbles()'s cell_edge_factor\n"
-  "            (default 1: the paper's lattice). --damping passes relax_bubbles()'s\n"
+  "            (default 1: the paper's lattice), --graded-cells its graded_cell_factor\n"
+  "            (cells that follow the sizing field; 0: off). --damping passes relax_bubbles()'s\n"
   "            damping c (default: its own, 2 sqrt(m k) = 2 with m = k = 1).\n"
   "            --resting passes its resting_displacement_ratio (default: its own;\n"
   "            0: every bubble moves at every step). Bubble-steps count moved bubbles.\n"
@@ -301,7 +303,7 @@ void print_wall_classes(const Model& m, const std::vector<Bubble>& interior, con
 }
 
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, bool planar, bool repulsive, bool by_wall, double cell_edge_factor, double damping, double resting)
+                bool remesh, bool planar, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -355,7 +357,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
     const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
     std::vector<Bubble> interior =
-      BM::place_initial_bubbles(m, surface, sizing, params::cell_edge_factor(cell_edge_factor));
+      BM::place_initial_bubbles(m, surface, sizing, params::graded_cell_factor(graded, params::cell_edge_factor(cell_edge_factor)));
     const std::size_t placed = interior.size();
     Step_clock clock;
     clock.print_rounds = print_rounds;
@@ -444,7 +446,7 @@ int main(int argc, char** argv)
     return 2;
   }
   const bool alpha = std::strcmp(argv[1], "alpha") == 0;
-  double edge_length = 12., cell_edge_factor = 1., damping = -1.; // damping < 0: relax_bubbles()'s own
+  double edge_length = 12., cell_edge_factor = 1., graded = 0., damping = -1.; // damping < 0: relax_bubbles()'s own
   double resting = BM::internal::Dynamics_settings().rest_ratio; // relax_bubbles()'s default
   std::size_t steps = 100, warmup = 20;
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
@@ -468,6 +470,7 @@ int main(int argc, char** argv)
     }
     else if(a == "--rounds" && alpha) print_rounds = true;
     else if(a == "--cell-edge-factor" && alpha && has_value) cell_edge_factor = std::atof(argv[++i]);
+    else if(a == "--graded-cells" && alpha && has_value) graded = std::atof(argv[++i]);
     else if(a == "--damping" && alpha && has_value)
     {
       damping = std::atof(argv[++i]);
@@ -493,7 +496,7 @@ int main(int argc, char** argv)
     else models.push_back(a);
   }
   const bool bad_skin = skins.empty() || std::any_of(skins.begin(), skins.end(), [](double s) { return !(s > 0.); });
-  if(threads.empty() || !(edge_length > 0.) || !(cell_edge_factor > 0.) || !(resting >= 0. && resting < 1.) || bad_skin || warmup == 0 || warmup >= steps)
+  if(threads.empty() || !(edge_length > 0.) || !(cell_edge_factor > 0.) || !(graded >= 0.) || !(resting >= 0. && resting < 1.) || bad_skin || warmup == 0 || warmup >= steps)
   {
     std::cerr << usage;
     return 2;
@@ -503,5 +506,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive, by_wall, cell_edge_factor, damping, resting);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive, by_wall, cell_edge_factor, graded, damping, resting);
 }

@@ -393,7 +393,9 @@ static void test_initial_bubbles_on_box()
   std::vector<BM::Region_placement_statistics> stats;
   CGAL::Real_timer t;
   t.start();
-  const std::vector<Bubble> ib = BM::place_initial_bubbles(box, sb, BMP::placement_statistics(&stats).random_seed(1));
+  // the paper's lattice (graded cells: test_graded_cells_on_box())
+  const std::vector<Bubble> ib =
+    BM::place_initial_bubbles(box, sb, BMP::graded_cell_factor(0., BMP::placement_statistics(&stats).random_seed(1)));
   std::cout << "two-layer box: " << ib.size() << " initial bubbles in " << t.time() << " s\n";
   assert(stats.size() == 3);
   std::size_t count[3] = {0, 0, 0};
@@ -447,7 +449,7 @@ static void test_initial_bubbles_on_box()
   assert(near_fault > 0);
 
   // same seed, same result; and with or without parallelism
-  const std::vector<Bubble> again = BM::place_initial_bubbles(box, sb, BMP::parallel_regions(false).random_seed(1));
+  const std::vector<Bubble> again = BM::place_initial_bubbles(box, sb, BMP::graded_cell_factor(0., BMP::parallel_regions(false).random_seed(1)));
   assert(again.size() == ib.size());
   for(std::size_t i = 0; i < ib.size(); ++i)
     assert(again[i].center == ib[i].center && again[i].radius == ib[i].radius && again[i].region == ib[i].region);
@@ -456,7 +458,8 @@ static void test_initial_bubbles_on_box()
   std::vector<BM::Region_placement_statistics> st2;
   t.reset();
   const std::vector<Bubble> dense = BM::place_initial_bubbles(
-    box, sb, BMP::number_of_clusters(3, BMP::region_scale_factors({1., 1., 0.7}, BMP::placement_statistics(&st2))));
+    box, sb, BMP::graded_cell_factor(0., BMP::number_of_clusters(3, BMP::region_scale_factors({1., 1., 0.7},
+                                                                  BMP::placement_statistics(&st2)))));
   std::cout << "  k = 3, region 2 at scale 0.7: " << st2[1].number_of_bubbles << " + " << st2[2].number_of_bubbles
             << " bubbles, cell edges " << st2[1].cell_edge << ", " << st2[2].cell_edge << ", " << t.time() << " s\n";
   assert(st2[1].number_of_clusters == 3 && st2[2].number_of_clusters == 3 && st2[1].cluster_validity.empty());
@@ -464,10 +467,68 @@ static void test_initial_bubbles_on_box()
   assert(st2[2].number_of_bubbles > 2 * stats[2].number_of_bubbles);
   assert(min_clearance_ratio(box, dense, false) >= 1. - 1e-12);
 
-  const std::vector<Bubble> wide = BM::place_initial_bubbles(box, sb, BMP::surface_clearance_factor(2.));
+  const std::vector<Bubble> wide = BM::place_initial_bubbles(box, sb, BMP::graded_cell_factor(0., BMP::surface_clearance_factor(2.)));
   const double wide_ratio = min_clearance_ratio(box, wide, false);
   std::cout << "  clearance factor 2: " << wide.size() << " bubbles, smallest distance / radius " << wide_ratio << "\n";
   assert(wide.size() < ib.size() && wide_ratio >= 2. - 1e-12);
+}
+
+// A radius of 0.1 where x < 5 and 0.2 beyond: a field with two sizes.
+struct Two_sizes
+{
+  double operator()(const Point_3& p, std::size_t) const { return p.x() < 5. ? 0.1 : 0.2; }
+};
+
+// graded_cell_factor: cells that follow the sizing field
+static void test_graded_cells_on_box()
+{
+  const Model box = make_two_layer_box();
+  const std::vector<Bubble> sb = BM::place_surface_bubbles(box);
+  const Two_sizes sizing;
+  const double g = 1.8;
+  std::vector<BM::Region_placement_statistics> stats;
+  const std::vector<Bubble> ib =
+    BM::place_initial_bubbles(box, sb, sizing, BMP::graded_cell_factor(g, BMP::placement_statistics(&stats)));
+  std::size_t fine = 0, coarse = 0;
+  for(const Bubble& b : ib)
+  {
+    assert(!b.is_fixed && (b.region == 1 || b.region == 2));
+    const double x = b.center.x(), y = b.center.y(), z = b.center.z();
+    const double zlo = b.region == 1 ? 0. : 2.;
+    assert(x > 0 && x < 10 && y > 0 && y < 6 && z > zlo && z < zlo + 2);
+    assert(b.radius == sizing(b.center, b.region));
+    (x < 5. ? fine : coarse) += 1;
+  }
+  for(std::size_t r = 1; r <= 2; ++r)
+    assert(stats[r].number_of_cells == stats[r].rejected_outside + stats[r].rejected_near_surface +
+                                         stats[r].number_of_bubbles);
+  // a cell's edge is within a factor sqrt(2) of g R: each half holds between
+  // (V / (sqrt 2 g R)^3) and (V / (g R / sqrt 2)^3) cells, less those near the walls
+  const double half = 5. * 6. * 4.;
+  const auto bounds = [&](double R) {
+    return std::make_pair(half / std::pow(std::sqrt(2.) * g * R, 3), half / std::pow(g * R / std::sqrt(2.), 3));
+  };
+  std::cout << "graded cells (g = " << g << "): " << fine << " bubbles where R = 0.1, " << coarse
+            << " where R = 0.2; at most " << bounds(0.1).second << " and " << bounds(0.2).second << "\n";
+  assert(double(fine) <= bounds(0.1).second && double(coarse) <= bounds(0.2).second);
+  // the walls take a layer of about R, less than half the volume here
+  assert(double(fine) >= 0.5 * bounds(0.1).first && double(coarse) >= 0.5 * bounds(0.2).first);
+  // eight times the volume per bubble on the coarse side, within the cells' rounding
+  const double ratio = double(fine) / double(coarse);
+  assert(ratio > 4. && ratio < 16.);
+  // the uniform lattice of the same field has one cell edge for both halves
+  const std::vector<Bubble> uniform = BM::place_initial_bubbles(box, sb, sizing, BMP::graded_cell_factor(0.));
+  std::size_t ufine = 0, ucoarse = 0;
+  for(const Bubble& b : uniform) (b.center.x() < 5. ? ufine : ucoarse) += 1;
+  std::cout << "  uniform lattice: " << ufine << " and " << ucoarse << "\n";
+  assert(double(ufine) < 2. * double(ucoarse) && double(ucoarse) < 2. * double(ufine));
+  assert(min_clearance_ratio(box, ib, true) >= 1. - 1e-12);
+  // with or without parallelism, the same bubbles in the same order
+  const std::vector<Bubble> again =
+    BM::place_initial_bubbles(box, sb, sizing, BMP::graded_cell_factor(g, BMP::parallel_regions(false)));
+  assert(again.size() == ib.size());
+  for(std::size_t i = 0; i < ib.size(); ++i)
+    assert(again[i].center == ib[i].center && again[i].radius == ib[i].radius && again[i].region == ib[i].region);
 }
 
 // Region of a point by ray parity against each region's boundary, with an
@@ -577,6 +638,7 @@ int main()
   test_silhouette_subsample();
   test_radius_rule();
   test_initial_bubbles_on_box();
+  test_graded_cells_on_box();
   test_default_model();
   test_real_models();
   std::cout << "test_placement: OK\n";

@@ -35,6 +35,11 @@ enum class Radius_weighting
 
 struct Region_placement_statistics;
 
+/// \ingroup PkgBubbleMesh3Ref
+/// default of `place_initial_bubbles()`'s `graded_cell_factor`: initial cells about as large as the
+/// spacing of the relaxed bubbles (0 would give the paper's lattice of one cell edge per region)
+constexpr double default_graded_cell_factor = 2.5;
+
 namespace internal_np {
 enum number_of_clusters_t { number_of_clusters };
 enum min_number_of_clusters_t { min_number_of_clusters };
@@ -45,6 +50,7 @@ enum number_of_restarts_t { number_of_restarts };
 enum silhouette_sample_size_t { silhouette_sample_size };
 enum surface_radius_factor_t { surface_radius_factor };
 enum cell_edge_factor_t { cell_edge_factor };
+enum graded_cell_factor_t { graded_cell_factor };
 enum surface_clearance_factor_t { surface_clearance_factor };
 enum interaction_range_factor_t { interaction_range_factor };
 enum radius_weighting_t { radius_weighting };
@@ -77,6 +83,8 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, silhouette_sample_size)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_radius_factor)
 /// cell edge = factor * (r_max + r_min) / 2 (default 1)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, cell_edge_factor)
+/// g > 0: the initial cells follow the sizing field, a cell's edge within a factor sqrt(2) of g times the radius at its centre; 0: one cell edge per region, the paper's lattice (default `default_graded_cell_factor`)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, graded_cell_factor)
 /// a candidate must be at least factor * its radius from every surface triangle (default 1)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, surface_clearance_factor)
 /// surface bubble j is a weight point when l_ij < factor * (R0 + r_j) (default 1.5)
