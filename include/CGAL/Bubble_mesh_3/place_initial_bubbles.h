@@ -32,7 +32,6 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
-#include <climits>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -140,6 +139,13 @@ struct Region_surfaces
   {
     return CGAL::to_double(tree->squared_distance(p));
   }
+
+  // a bubble of `radius` at `p` keeps `factor` times its radius from every triangle
+  bool has_room(const Point_3& p, double radius, double factor) const
+  {
+    const double clearance = factor * radius;
+    return radius > 0. && squared_distance(p) > clearance * clearance;
+  }
 };
 
 template <class Function>
@@ -171,6 +177,105 @@ struct Placement_settings
 
 typedef std::array<long, 3> Cell;
 
+// The bounding boxes of the clusters of a region's surface points; the
+// corner of all of them anchors the region's lattice.
+struct Cluster_boxes
+{
+  std::vector<std::array<double, 3> > lo, hi; // per cluster; lo > hi for an empty one
+  std::array<double, 3> origin, top;          // the corners of all points
+
+  Cluster_boxes(const std::vector<std::array<double, 3> >& pts, const std::vector<std::size_t>& labels, std::size_t k)
+    : lo(k, {{DBL_MAX, DBL_MAX, DBL_MAX}}), hi(k, {{-DBL_MAX, -DBL_MAX, -DBL_MAX}}), origin(pts.front()), top(pts.front())
+  {
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      for(int d = 0; d < 3; ++d)
+      {
+        lo[labels[i]][d] = (std::min)(lo[labels[i]][d], pts[i][d]);
+        hi[labels[i]][d] = (std::max)(hi[labels[i]][d], pts[i][d]);
+        origin[d] = (std::min)(origin[d], pts[i][d]);
+        top[d] = (std::max)(top[d], pts[i][d]);
+      }
+  }
+  std::size_t size() const { return lo.size(); }
+  bool is_empty(std::size_t c) const { return lo[c][0] > hi[c][0]; }
+  // does the box [a, b] meet a cluster's box (touching counts)?
+  bool meets(const std::array<double, 3>& a, const std::array<double, 3>& b) const
+  {
+    for(std::size_t c = 0; c < size(); ++c)
+      if(lo[c][0] <= b[0] && a[0] <= hi[c][0] && lo[c][1] <= b[1] && a[1] <= hi[c][1] && lo[c][2] <= b[2] &&
+         a[2] <= hi[c][2])
+        return true;
+    return false;
+  }
+};
+
+// The cells tested by one task (a slab of the lattice, a coarsest graded
+// cell) and the bubbles placed in them; merged in task order.
+template <class GeomTraits>
+struct Placed_cells
+{
+  std::vector<Bubble<GeomTraits> > bubbles;
+  std::size_t cells = 0, outside = 0, near_surface = 0;
+
+  void append_to(std::vector<Bubble<GeomTraits> >& out, Region_placement_statistics& stats) const
+  {
+    stats.number_of_cells += cells;
+    stats.rejected_outside += outside;
+    stats.rejected_near_surface += near_surface;
+    out.insert(out.end(), bubbles.begin(), bubbles.end());
+  }
+};
+
+// Steps 3-4 with the paper's lattice of edge h: a cell belongs to the first
+// cluster whose box holds it; each cluster's cells go by slabs of constant x.
+template <class GeomTraits, class SizingField>
+void place_lattice_cells(const Cluster_boxes& boxes, double h, const Region_surfaces<GeomTraits>& surfaces,
+                         const SizingField& sizing, std::size_t r, const Placement_settings& set,
+                         std::vector<Bubble<GeomTraits> >& out, Region_placement_statistics& stats)
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  const std::array<double, 3>& origin = boxes.origin;
+  // the cells of each box (the same as the cells of its points' extremes: the floor is monotone)
+  const std::size_t k = boxes.size();
+  std::vector<Cell> lo(k), hi(k);
+  for(std::size_t c = 0; c < k; ++c)
+    if(!boxes.is_empty(c))
+      for(int d = 0; d < 3; ++d)
+      {
+        lo[c][d] = long(std::floor((boxes.lo[c][d] - origin[d]) / h));
+        hi[c][d] = long(std::floor((boxes.hi[c][d] - origin[d]) / h));
+      }
+  const auto in_box = [&](std::size_t c, long i, long j, long l) {
+    return !boxes.is_empty(c) && lo[c][0] <= i && i <= hi[c][0] && lo[c][1] <= j && j <= hi[c][1] && lo[c][2] <= l &&
+           l <= hi[c][2];
+  };
+  for(std::size_t c = 0; c < k; ++c)
+  {
+    if(boxes.is_empty(c)) continue;
+    const std::size_t nx = std::size_t(hi[c][0] - lo[c][0] + 1);
+    std::vector<Placed_cells<GeomTraits> > slabs(nx);
+    for_each_index(0, nx, set.parallel, [&](std::size_t s) {
+      const long i = lo[c][0] + long(s);
+      Placed_cells<GeomTraits>& slab = slabs[s];
+      for(long j = lo[c][1]; j <= hi[c][1]; ++j)
+        for(long l = lo[c][2]; l <= hi[c][2]; ++l)
+        {
+          bool earlier = false;
+          for(std::size_t e = 0; e < c && !earlier; ++e) earlier = in_box(e, i, j, l);
+          if(earlier) continue;
+          ++slab.cells;
+          const Point_3 p(origin[0] + (double(i) + 0.5) * h, origin[1] + (double(j) + 0.5) * h,
+                          origin[2] + (double(l) + 0.5) * h);
+          if(!surfaces.is_inside(p)) { ++slab.outside; continue; }
+          const double radius = sizing(p, r);
+          if(!surfaces.has_room(p, radius, set.clearance_factor)) { ++slab.near_surface; continue; }
+          slab.bubbles.emplace_back(p, radius, r, no_index, false);
+        }
+    });
+    for(const Placed_cells<GeomTraits>& slab : slabs) slab.append_to(out, stats);
+  }
+}
+
 /*
 The graded variant of steps 3-4 (`graded_cell_factor` g > 0): cubic cells of
 edges e_0 2^k on one lattice anchored at `origin`, split into eight while an
@@ -184,8 +289,7 @@ counts only if its centre lies in one (the clustering's part, as in the
 uniform lattice).
 */
 template <class GeomTraits, class SizingField>
-void place_graded_cells(const std::vector<std::array<double, 3> >& pts, const std::vector<std::size_t>& labels,
-                        std::size_t k, double s_min, double s_max, const std::array<double, 3>& origin,
+void place_graded_cells(const Cluster_boxes& boxes, double s_min, double s_max,
                         const Region_surfaces<GeomTraits>& surfaces, const SizingField& sizing, std::size_t r,
                         const Placement_settings& set, std::vector<Bubble<GeomTraits> >& out,
                         Region_placement_statistics& stats)
@@ -193,50 +297,29 @@ void place_graded_cells(const std::vector<std::array<double, 3> >& pts, const st
   typedef typename GeomTraits::Point_3 Point_3;
   const double g = set.graded_cell_factor, root2 = std::sqrt(2.);
   const double e0 = g * s_min / root2;
-  if(!(e0 > 0.) || !std::isfinite(e0) || k == 0) return;
+  if(!(e0 > 0.) || !std::isfinite(e0)) return;
   // the coarsest level holds cells of the largest size found on the surfaces, with room
   int levels = 0;
   while(levels < 16 && e0 * std::ldexp(1., levels) < root2 * g * s_max * 2.) ++levels;
   const double top = e0 * std::ldexp(1., levels);
   stats.cell_edge = e0;
 
-  std::vector<std::array<double, 3> > blo(k, {{DBL_MAX, DBL_MAX, DBL_MAX}}), bhi(k, {{-DBL_MAX, -DBL_MAX, -DBL_MAX}});
-  for(std::size_t i = 0; i < pts.size(); ++i)
-    for(int d = 0; d < 3; ++d)
-    {
-      blo[labels[i]][d] = (std::min)(blo[labels[i]][d], pts[i][d]);
-      bhi[labels[i]][d] = (std::max)(bhi[labels[i]][d], pts[i][d]);
-    }
-  // does the cell [a, b] meet a cluster box (touching counts)?
-  const auto meets_box = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    for(std::size_t c = 0; c < k; ++c)
-      if(blo[c][0] <= b[0] && a[0] <= bhi[c][0] && blo[c][1] <= b[1] && a[1] <= bhi[c][1] && blo[c][2] <= b[2] &&
-         a[2] <= bhi[c][2])
-        return true;
-    return false;
-  };
-  std::array<double, 3> all_hi = origin;
-  for(const auto& p : pts)
-    for(int d = 0; d < 3; ++d) all_hi[d] = (std::max)(all_hi[d], p[d]);
+  const std::array<double, 3>& origin = boxes.origin;
   std::vector<Cell> tops;
-  const long nx = long(std::floor((all_hi[0] - origin[0]) / top)), ny = long(std::floor((all_hi[1] - origin[1]) / top)),
-             nz = long(std::floor((all_hi[2] - origin[2]) / top));
+  const long nx = long(std::floor((boxes.top[0] - origin[0]) / top)),
+             ny = long(std::floor((boxes.top[1] - origin[1]) / top)),
+             nz = long(std::floor((boxes.top[2] - origin[2]) / top));
   for(long i = 0; i <= nx; ++i)
     for(long j = 0; j <= ny; ++j)
       for(long l = 0; l <= nz; ++l)
       {
         const std::array<double, 3> a{{origin[0] + double(i) * top, origin[1] + double(j) * top, origin[2] + double(l) * top}};
-        if(meets_box(a, {{a[0] + top, a[1] + top, a[2] + top}})) tops.push_back(Cell{{i, j, l}});
+        if(boxes.meets(a, {{a[0] + top, a[1] + top, a[2] + top}})) tops.push_back(Cell{{i, j, l}});
       }
 
-  struct Part
-  {
-    std::vector<Bubble<GeomTraits> > bubbles;
-    std::size_t cells = 0, outside = 0, near_surface = 0;
-  };
-  std::vector<Part> parts(tops.size());
+  std::vector<Placed_cells<GeomTraits> > parts(tops.size());
   for_each_index(0, tops.size(), set.parallel, [&](std::size_t t) {
-    Part& part = parts[t];
+    Placed_cells<GeomTraits>& part = parts[t];
     // depth first, children in lexicographic order: the same bubbles in the same order whatever the threads
     // (cell, level, whether it is the child of a rejected leaf: tested as it is, never split)
     std::vector<std::tuple<Cell, int, bool> > stack(1, std::make_tuple(tops[t], levels, false));
@@ -248,49 +331,35 @@ void place_graded_cells(const std::vector<std::array<double, 3> >& pts, const st
       stack.pop_back();
       const double e = e0 * std::ldexp(1., level);
       const std::array<double, 3> a{{origin[0] + double(c[0]) * e, origin[1] + double(c[1]) * e, origin[2] + double(c[2]) * e}};
-      if(!meets_box(a, {{a[0] + e, a[1] + e, a[2] + e}})) continue;
-      const Point_3 p(a[0] + 0.5 * e, a[1] + 0.5 * e, a[2] + 0.5 * e);
+      if(!boxes.meets(a, {{a[0] + e, a[1] + e, a[2] + e}})) continue;
+      const std::array<double, 3> q{{a[0] + 0.5 * e, a[1] + 0.5 * e, a[2] + 0.5 * e}};
+      const Point_3 p(q[0], q[1], q[2]);
       const double radius = sizing(p, r);
       const bool split_by_size = !last && level > 0 && !(e <= root2 * g * radius);
-      bool split = split_by_size;
-      if(!split)
+      if(!split_by_size)
       {
-        const std::array<double, 3> q{{a[0] + 0.5 * e, a[1] + 0.5 * e, a[2] + 0.5 * e}};
-        if(!meets_box(q, q)) continue;
-        if(!surfaces.is_inside(p))
+        if(!boxes.meets(q, q)) continue;
+        const bool inside = surfaces.is_inside(p);
+        if(inside && surfaces.has_room(p, radius, set.clearance_factor))
         {
-          if(level == 0 || last) { ++part.cells; ++part.outside; continue; }
-          split = true;
+          ++part.cells;
+          part.bubbles.emplace_back(p, radius, r, no_index, false);
+          continue;
         }
-        else
+        if(level == 0 || last)
         {
-          const double clearance = set.clearance_factor * radius;
-          if(!(radius > 0.) || !(surfaces.squared_distance(p) > clearance * clearance))
-          {
-            if(level == 0 || last) { ++part.cells; ++part.near_surface; continue; }
-            split = true;
-          }
-          else
-          {
-            ++part.cells;
-            part.bubbles.emplace_back(p, radius, r, no_index, false);
-            continue;
-          }
+          ++part.cells;
+          ++(inside ? part.near_surface : part.outside);
+          continue;
         }
       }
-      // (pushed in reverse: popped in lexicographic order)
+      // split, by size or to try again nearer the surfaces (pushed in reverse: popped in lexicographic order)
       for(int ch = 7; ch >= 0; --ch)
         stack.emplace_back(Cell{{2 * c[0] + ((ch >> 2) & 1), 2 * c[1] + ((ch >> 1) & 1), 2 * c[2] + (ch & 1)}}, level - 1,
                            !split_by_size);
     }
   });
-  for(Part& part : parts)
-  {
-    stats.number_of_cells += part.cells;
-    stats.rejected_outside += part.outside;
-    stats.rejected_near_surface += part.near_surface;
-    out.insert(out.end(), part.bubbles.begin(), part.bubbles.end());
-  }
+  for(const Placed_cells<GeomTraits>& part : parts) part.append_to(out, stats);
 }
 
 // Places the bubbles of region r; all its output goes to `out` and `stats`.
@@ -361,75 +430,16 @@ void place_region_bubbles(const Geological_model_3<GeomTraits>& model,
 
   // 3. one lattice per region, anchored at the corner of its points' box, so
   // that overlapping cluster boxes name the same cells
-  std::array<double, 3> origin = pts.front();
-  for(const auto& p : pts)
-    for(int d = 0; d < 3; ++d) origin[d] = (std::min)(origin[d], p[d]);
   const std::size_t k = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
-  std::vector<Cell> lo(k, Cell{{LONG_MAX, LONG_MAX, LONG_MAX}}), hi(k, Cell{{LONG_MIN, LONG_MIN, LONG_MIN}});
-  for(std::size_t i = 0; i < pts.size(); ++i)
-    for(int d = 0; d < 3; ++d)
-    {
-      const long c = long(std::floor((pts[i][d] - origin[d]) / h));
-      lo[labels[i]][d] = (std::min)(lo[labels[i]][d], c);
-      hi[labels[i]][d] = (std::max)(hi[labels[i]][d], c);
-    }
-  const auto in_box = [&](std::size_t c, long i, long j, long l) {
-    return lo[c][0] <= i && i <= hi[c][0] && lo[c][1] <= j && j <= hi[c][1] && lo[c][2] <= l && l <= hi[c][2];
-  };
+  const Cluster_boxes boxes(pts, labels, k);
 
   const Region_surfaces<GeomTraits> surfaces(model, r);
   if(!surfaces.side_of) return;
 
   if(set.graded_cell_factor > 0.)
-  {
-    place_graded_cells(pts, labels, k, s_min, s_max, origin, surfaces, sizing, r, set, out, stats);
-    stats.number_of_bubbles = out.size();
-    stats.placement_seconds = timer.time() - stats.clustering_seconds;
-    return;
-  }
-
-  // 4. candidates: a cell belongs to the first cluster whose box holds it
-  for(std::size_t c = 0; c < k; ++c)
-  {
-    if(lo[c][0] > hi[c][0]) continue; // empty cluster
-    const std::size_t nx = std::size_t(hi[c][0] - lo[c][0] + 1);
-    struct Slab
-    {
-      std::vector<Bubble<GeomTraits> > bubbles;
-      std::size_t cells = 0, outside = 0, near_surface = 0;
-    };
-    std::vector<Slab> slabs(nx);
-    for_each_index(0, nx, set.parallel, [&](std::size_t s) {
-      const long i = lo[c][0] + long(s);
-      Slab& slab = slabs[s];
-      for(long j = lo[c][1]; j <= hi[c][1]; ++j)
-        for(long l = lo[c][2]; l <= hi[c][2]; ++l)
-        {
-          bool earlier = false;
-          for(std::size_t e = 0; e < c && !earlier; ++e) earlier = in_box(e, i, j, l);
-          if(earlier) continue;
-          ++slab.cells;
-          const Point_3 p(origin[0] + (double(i) + 0.5) * h, origin[1] + (double(j) + 0.5) * h,
-                          origin[2] + (double(l) + 0.5) * h);
-          if(!surfaces.is_inside(p)) { ++slab.outside; continue; }
-          const double radius = sizing(p, r);
-          const double clearance = set.clearance_factor * radius;
-          if(!(radius > 0.) || !(surfaces.squared_distance(p) > clearance * clearance))
-          {
-            ++slab.near_surface;
-            continue;
-          }
-          slab.bubbles.emplace_back(p, radius, r, no_index, false);
-        }
-    });
-    for(Slab& slab : slabs)
-    {
-      stats.number_of_cells += slab.cells;
-      stats.rejected_outside += slab.outside;
-      stats.rejected_near_surface += slab.near_surface;
-      out.insert(out.end(), slab.bubbles.begin(), slab.bubbles.end());
-    }
-  }
+    place_graded_cells(boxes, s_min, s_max, surfaces, sizing, r, set, out, stats);
+  else
+    place_lattice_cells(boxes, h, surfaces, sizing, r, set, out, stats);
   stats.number_of_bubbles = out.size();
   stats.placement_seconds = timer.time() - stats.clustering_seconds;
 }
