@@ -84,16 +84,18 @@ const char* usage =
   "            CGAL::Side_of_triangle_mesh; overlap-ratio quantiles, histogram and the\n"
   "            share inside [10,14]. --rounds prints a line at the end of every\n"
   "            population round (region, changes, population, steps, last move).\n"
-  "            --cell-edge-factor passes place_initial_bubbles()'s cell_edge_factor\n"
-  "            (default 1: the paper's lattice), --graded-cells its graded_cell_factor\n"
-  "            (cells that follow the sizing field; 0: off). --damping passes relax_bubbles()'s\n"
+  "            --graded-cells passes place_initial_bubbles()'s graded_cell_factor (cells\n"
+  "            that follow the sizing field; default: its own, as the program; 0: the\n"
+  "            paper's lattice, whose edge --cell-edge-factor scales, default 1).\n"
+  "            --damping passes relax_bubbles()'s\n"
   "            damping c (default: its own, 2 sqrt(m k) = 2 with m = k = 1).\n"
   "            --resting passes its resting_displacement_ratio (default: its own;\n"
   "            0: every bubble moves at every step). Bubble-steps count moved bubbles.\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
-  "            defaults), as bubble_mesh_3 does by default with the surfaces kept.\n"
+  "            defaults), as bubble_mesh_3 does by default with the surfaces kept;\n"
+  "            --planar-axis-only refines only the axis-plane pieces (refine_tilted_pieces(false)).\n"
   "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n"
   "            --by-wall also splits the interior bubbles by distance to the nearest\n"
   "            input triangle (in their radius) and, within 3 radii, by that triangle's\n"
@@ -303,7 +305,7 @@ void print_wall_classes(const Model& m, const std::vector<Bubble>& interior, con
 }
 
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, bool planar, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting)
+                bool remesh, int planar, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -338,7 +340,8 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     if(planar && !remesh)
     {
       Model retriangulated;
-      const BM::Planar_retriangulation_report pr = BM::retriangulate_planar_patches(m, retriangulated);
+      const BM::Planar_retriangulation_report pr =
+        BM::retriangulate_planar_patches(m, retriangulated, BM::parameters::refine_tilted_pieces(planar == 1));
       std::cout << name << ": planar pieces re-triangulated, " << pr.number_of_points_added << " new points, "
                 << m.number_of_triangles() << " -> " << retriangulated.number_of_triangles() << " triangles" << std::endl;
       m = std::move(retriangulated);
@@ -446,13 +449,14 @@ int main(int argc, char** argv)
     return 2;
   }
   const bool alpha = std::strcmp(argv[1], "alpha") == 0;
-  double edge_length = 12., cell_edge_factor = 1., graded = 0., damping = -1.; // damping < 0: relax_bubbles()'s own
+  double edge_length = 12., cell_edge_factor = 1., graded = BM::default_graded_cell_factor, damping = -1.; // damping < 0: relax_bubbles()'s own
   double resting = BM::internal::Dynamics_settings().rest_ratio; // relax_bubbles()'s default
   std::size_t steps = 100, warmup = 20;
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
-  bool print_rounds = false, remesh = false, planar = false, repulsive = false, by_wall = false;
+  bool print_rounds = false, remesh = false, repulsive = false, by_wall = false;
+  int planar = 0; // 1: retriangulate_planar_patches() defaults, 2: axis planes only
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -478,7 +482,8 @@ int main(int argc, char** argv)
     }
     else if(a == "--resting" && alpha && has_value) resting = std::atof(argv[++i]);
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
-    else if(a == "--planar" && alpha) planar = true;
+    else if(a == "--planar" && alpha) planar = 1;
+    else if(a == "--planar-axis-only" && alpha) planar = 2;
     else if(a == "--repulsive" && alpha) repulsive = true;
     else if(a == "--by-wall" && alpha) by_wall = true;
     else if(a == "--threads" && has_value)

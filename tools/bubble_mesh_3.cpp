@@ -103,7 +103,11 @@ const char* usage_text =
 "                             new points until their triangles' angles reach D degrees\n"
 "                             and their edges the median input edge (finer next to\n"
 "                             finer points on their border) where other surfaces allow\n"
-"                             (default 10; 0: re-triangulate with the input points only)\n"
+"                             (default 10; 0: re-triangulate with the input points only);\n"
+"                             other pieces and curved surfaces' triangles with no angle\n"
+"                             under 20 degrees get new points where over twice as wide\n"
+"  --axis-planes-only         give new points to axis-plane pieces only (not to tilted\n"
+"                             pieces and curved surfaces' triangles)\n"
 "  --size S                   target edge length of the re-meshed surfaces (with\n"
 "                             --remesh-surfaces): in model units, or with a % sign, of\n"
 "                             the bounding-box diagonal (e.g. 2%); default: the median\n"
@@ -166,6 +170,7 @@ struct Options
   bool repulsive_force = false;
   bool keep_input_triangles = false;
   double planar_angle_bound = 10.;
+  bool refine_tilted_pieces = true;
   double size = 0.;          // absolute target edge length (0: not given)
   double relative_size = 0.; // fraction of the bounding-box diagonal (0: not given)
   // edges across a thin layer: Remeshing_sizing_field's elements_across_thickness
@@ -250,6 +255,7 @@ Options parse_options(int argc, char** argv)
     }
     else if(a == "--keep-input-triangles") o.keep_input_triangles = true;
     else if(a == "--planar-angle-bound") o.planar_angle_bound = parse_double(a, value(a));
+    else if(a == "--axis-planes-only") o.refine_tilted_pieces = false;
     else if(a == "--size")
     {
       std::string v = value(a);
@@ -448,12 +454,13 @@ int main(int argc, char** argv)
                     BM::parameters::sliver_bound(opt.sliver_bound,
                     BM::parameters::keep_input_triangles(opt.keep_input_triangles,
                     BM::parameters::planar_angle_bound(opt.planar_angle_bound,
+                    BM::parameters::refine_tilted_pieces(opt.refine_tilted_pieces,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
                     BM::parameters::elements_across_thickness(opt.layer_elements,
                     BM::parameters::size_grading(opt.size_grading,
                     BM::parameters::refine_ribbons(opt.refine_ribbons,
                     BM::parameters::number_of_population_rounds(opt.population_rounds,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));
@@ -510,6 +517,9 @@ int main(int argc, char** argv)
     if(report.planar_patches_retriangulated)
     {
       std::cout << std::setprecision(4) << "planar pieces: " << pr << "\n" << std::defaultfloat;
+      if(report.tilted_refinement_undone)
+        std::cout << "note: the surface recovery failed with new points on tilted pieces (curved surfaces' "
+                     "triangles); the mesh was made again with only the axis-plane pieces refined\n";
     }
     // sliver removal may add interior vertices: count them too, so that the total is the mesh's
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices

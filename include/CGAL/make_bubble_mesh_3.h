@@ -22,6 +22,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,7 @@ struct Bubble_mesh_report
   Surface_remeshing_report surface_remeshing; ///< stage 0 (`remesh_surfaces()`), if it ran
   bool planar_patches_retriangulated = false; ///< whether planar pieces were re-triangulated (`retriangulate_planar_patches()`)
   Planar_retriangulation_report planar_retriangulation; ///< if they were
+  bool tilted_refinement_undone = false;      ///< whether the mesh was made again without new points on tilted pieces (`refine_tilted_pieces(false)`) after the surface recovery failed with them
   std::size_t number_of_surface_bubbles = 0;  ///< one per model point
   std::size_t number_of_initial_bubbles = 0;  ///< interior bubbles placed (stage 2)
   std::size_t number_of_relaxed_bubbles = 0;  ///< interior bubbles after relaxation and population control
@@ -174,54 +176,72 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   const Geological_model_3<GeomTraits>& model =
     report->surfaces_remeshed ? remeshed : report->planar_patches_retriangulated ? retriangulated : input_model;
 
-  start("surface bubbles");
-  timer.start();
-  const std::vector<Bubble<GeomTraits> > surface_bubbles = place_surface_bubbles(model, np);
-  const Surface_bubble_sizing_field<GeomTraits> sizing(model, surface_bubbles, np);
-  timer.stop();
-  report->time_surface_bubbles = timer.time();
-  report->number_of_surface_bubbles = surface_bubbles.size();
-
-  start("clustering and initial bubbles");
-  timer.reset();
-  timer.start();
-  std::vector<Bubble<GeomTraits> > bubbles =
-    place_initial_bubbles(model, surface_bubbles, sizing,
-                          parameters::placement_statistics(&report->placement, np));
-  timer.stop();
-  report->time_placement = timer.time();
-  report->number_of_initial_bubbles = bubbles.size();
-
-  start("relaxation");
-  timer.reset();
-  timer.start();
-  report->relaxation = relax_bubbles(model, surface_bubbles, bubbles, sizing, np);
-  timer.stop();
-  report->time_relaxation = timer.time();
-  report->number_of_relaxed_bubbles = bubbles.size();
-
-  start("tetrahedralization");
-  timer.reset();
-  timer.start();
-  std::vector<typename GeomTraits::Point_3> centres;
-  centres.reserve(bubbles.size());
-  for(const Bubble<GeomTraits>& b : bubbles) centres.push_back(b.center);
   // which surface vertices are Steiner points, and on which input triangles
   // they lie: the sliver removal may collapse them again
   Surface_vertex_supports<typename Mesh_complex_3<GeomTraits>::Triangulation> supports;
-  report->tetrahedralization =
-    tetrahedralize_bubbles(model, centres, c3t3, parameters::surface_vertex_supports(&supports, np));
-  timer.stop();
-  report->time_tetrahedralization = timer.time();
+  // runs one stage, its seconds added to `seconds` (also when it throws: a
+  // stage run twice counts both runs)
+  auto timed = [&](const char* name, double& seconds, const auto& run) {
+    start(name);
+    timer.reset();
+    timer.start();
+    try { run(); }
+    catch(...)
+    {
+      timer.stop();
+      seconds += timer.time();
+      throw;
+    }
+    timer.stop();
+    seconds += timer.time();
+  };
+  auto stages_1_to_5 = [&](const Geological_model_3<GeomTraits>& meshed) {
+    std::vector<Bubble<GeomTraits> > surface_bubbles;
+    std::unique_ptr<Surface_bubble_sizing_field<GeomTraits> > sizing;
+    timed("surface bubbles", report->time_surface_bubbles, [&] {
+      surface_bubbles = place_surface_bubbles(meshed, np);
+      sizing.reset(new Surface_bubble_sizing_field<GeomTraits>(meshed, surface_bubbles, np));
+    });
+    report->number_of_surface_bubbles = surface_bubbles.size();
+
+    std::vector<Bubble<GeomTraits> > bubbles;
+    timed("clustering and initial bubbles", report->time_placement, [&] {
+      bubbles = place_initial_bubbles(meshed, surface_bubbles, *sizing,
+                                      parameters::placement_statistics(&report->placement, np));
+    });
+    report->number_of_initial_bubbles = bubbles.size();
+
+    timed("relaxation", report->time_relaxation,
+          [&] { report->relaxation = relax_bubbles(meshed, surface_bubbles, bubbles, *sizing, np); });
+    report->number_of_relaxed_bubbles = bubbles.size();
+
+    timed("tetrahedralization", report->time_tetrahedralization, [&] {
+      std::vector<typename GeomTraits::Point_3> centres;
+      centres.reserve(bubbles.size());
+      for(const Bubble<GeomTraits>& b : bubbles) centres.push_back(b.center);
+      report->tetrahedralization =
+        tetrahedralize_bubbles(meshed, centres, c3t3, parameters::surface_vertex_supports(&supports, np));
+    });
+  };
+  try { stages_1_to_5(model); }
+  catch(const Tetrahedralization_error&)
+  {
+    // The points rounded onto tilted pieces are the one thing here the
+    // recovery has not met in the input: rather than fail, mesh again
+    // without them (axis-plane pieces still refined).
+    if(!report->planar_patches_retriangulated || report->planar_retriangulation.number_of_refined_tilted_pieces == 0)
+      throw;
+    report->tilted_refinement_undone = true;
+    report->planar_retriangulation =
+      retriangulate_planar_patches(input_model, retriangulated, parameters::refine_tilted_pieces(false, np));
+    stages_1_to_5(retriangulated);
+  }
 
   // Surfaces and their points never move here: only bubbles do, and only where
   // the cells they make are better, so the guarantees of stage 5 still hold.
-  start("sliver removal");
-  timer.reset();
-  timer.start();
-  report->sliver_removal = remove_slivers(c3t3, parameters::surface_vertex_supports(&supports, np));
-  timer.stop();
-  report->time_sliver_removal = timer.time();
+  timed("sliver removal", report->time_sliver_removal, [&] {
+    report->sliver_removal = remove_slivers(c3t3, parameters::surface_vertex_supports(&supports, np));
+  });
   return *report;
 }
 

@@ -817,6 +817,71 @@ void test_planar_refinement()
   mesh_and_check("thin box with a flat top, planar pieces refined", g, inside, c3t3);
 }
 
+// A curved fault given as a few large triangles inside a thin box whose other
+// surfaces are fine grids: each fault triangle is a planar piece of its own,
+// off the axis planes, and a bare wall for the bubbles beside it. With the
+// defaults they get new points for size (on their planes, their shared edges
+// split in both triangles); with refine_tilted_pieces(false) they stay.
+void test_tilted_refinement()
+{
+  Model m;
+  make_thin_box(m, false);
+  add_inner_surface(m, "coarse curved fault", 1, [&](int i, int j) {
+    return Point_3(0.2 + 0.3 * i, 0.2 + 0.3 * j, 0.05 + 0.01 * jitter(i, j, 9));
+  }, 2, 2);
+  BM::validate_geological_model(m);
+  const std::size_t fault = m.number_of_patches() - 1;
+
+  Model axis_only, g;
+  BM::retriangulate_planar_patches(m, axis_only, BM::parameters::refine_tilted_pieces(false));
+  assert(patch_surface(m, fault).triangles == patch_surface(axis_only, fault).triangles);
+
+  const BM::Planar_retriangulation_report r = BM::retriangulate_planar_patches(m, g);
+  BM::validate_geological_model(g);
+  std::cout << "coarse curved fault: " << r << std::endl;
+  assert(r.number_of_refined_tilted_pieces >= 1 && r.number_of_excluded_pieces == 0);
+  assert_same_surface(m, g, fault);
+
+  // every point of the refined fault lies on an input fault triangle
+  const Patch_surface before = patch_surface(m, fault), after = patch_surface(g, fault);
+  std::set<std::size_t> fault_points;
+  for(const auto& t : after.triangles) fault_points.insert(t.begin(), t.end());
+  std::size_t new_points = 0;
+  for(std::size_t v : fault_points)
+  {
+    double d2 = std::numeric_limits<double>::infinity();
+    for(const auto& t : before.triangles)
+      d2 = (std::min)(d2, CGAL::squared_distance(g.point(v), K::Triangle_3(m.point(t[0]), m.point(t[1]), m.point(t[2]))));
+    assert(d2 <= 1e-24);
+    if(v >= m.number_of_points()) ++new_points;
+  }
+  assert(new_points > 0);
+
+  // its triangles are no longer much wider than the model's median edge
+  std::vector<double> lengths;
+  std::set<std::pair<std::size_t, std::size_t> > edges;
+  for(const auto& t : m.triangles())
+    for(int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  for(const auto& e : edges) lengths.push_back(std::sqrt(CGAL::squared_distance(m.point(e.first), m.point(e.second))));
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  const double median = lengths[lengths.size() / 2];
+  auto longest = [](const Model& x, const Patch_surface& s) {
+    double l = 0.;
+    for(const auto& t : s.triangles)
+      for(int k = 0; k < 3; ++k)
+        l = (std::max)(l, std::sqrt(CGAL::squared_distance(x.point(t[k]), x.point(t[(k + 1) % 3]))));
+    return l;
+  };
+  const double longest_before = longest(m, before), longest_after = longest(g, after);
+  std::cout << "  fault: " << before.triangles.size() << " -> " << after.triangles.size() << " triangles, longest edge "
+            << longest_before << " -> " << longest_after << ", median input edge " << median << std::endl;
+  assert(longest_before > 2.5 * median && longest_after <= 2.5 * median);
+
+  const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 0.04, 13);
+  C3T3 c3t3;
+  mesh_and_check("thin box with a coarse curved fault, its triangles refined", g, inside, c3t3);
+}
+
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
 void test_layered_model()
 {
@@ -849,13 +914,20 @@ void test_turned_layered_model()
     m.set_point(i, Point_3(c * p.x() - s * p.y(), s * p.x() + c * p.y(), p.z()));
   }
   BM::validate_geological_model(m);
-  // every wall is still one planar piece
+  // every wall is still one planar piece (counted without new points: the
+  // refinement of tilted pieces differs from that of axis planes)
   Model g_flat, g;
-  const BM::Planar_retriangulation_report r_flat = BM::retriangulate_planar_patches(flat, g_flat);
+  const BM::Planar_retriangulation_report r_flat =
+    BM::retriangulate_planar_patches(flat, g_flat, BM::parameters::planar_angle_bound(0.));
+  const BM::Planar_retriangulation_report r0 =
+    BM::retriangulate_planar_patches(m, g, BM::parameters::planar_angle_bound(0.));
+  std::cout << "turned layered model, planar pieces: " << r0 << " (not turned: " << r_flat << ")" << std::endl;
+  assert(r0.number_of_pieces == r_flat.number_of_pieces);
+  assert(r0.number_of_retriangulated_pieces == r_flat.number_of_retriangulated_pieces);
+  // with the defaults the turned walls, pieces off the axis planes, get points for size too
   const BM::Planar_retriangulation_report r = BM::retriangulate_planar_patches(m, g);
-  std::cout << "turned layered model, planar pieces: " << r << " (not turned: " << r_flat << ")" << std::endl;
-  assert(r.number_of_pieces == r_flat.number_of_pieces);
-  assert(r.number_of_retriangulated_pieces == r_flat.number_of_retriangulated_pieces);
+  std::cout << "  refined: " << r << std::endl;
+  assert(r.number_of_refined_tilted_pieces > 0 && r.number_of_points_added > 0);
   const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 60., 10);
   C3T3 as_given, retriangulated;
   mesh_and_check("layered model turned by 30 degrees", m, inside, as_given);
@@ -1036,6 +1108,7 @@ int main(int argc, char** argv)
   test_tilted_grid_box();
   test_planar_retriangulation();
   test_planar_refinement();
+  test_tilted_refinement();
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
   test_layered_model();
   test_turned_layered_model();

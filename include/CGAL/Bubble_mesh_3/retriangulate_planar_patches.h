@@ -20,6 +20,7 @@ namespace Bubble_mesh_3 {
 
 namespace internal_np {
 enum planar_angle_bound_t { planar_angle_bound };
+enum refine_tilted_pieces_t { refine_tilted_pieces };
 } // namespace internal_np
 
 namespace parameters {
@@ -28,6 +29,10 @@ namespace parameters {
 /// on planar pieces that lie in an axis plane, with new points (which also
 /// bring their edges to the median input edge); 0: no new points
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, planar_angle_bound)
+/// \ingroup PkgBubbleMesh3Ref
+/// whether `retriangulate_planar_patches()` also gives new points for size to
+/// pieces off the axis planes and to single triangles of curved surfaces
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, refine_tilted_pieces)
 } // namespace parameters
 
 /*!
@@ -55,6 +60,16 @@ piece covers the same polygon as before.
   circumcentre would come too close to it. Edges shared with any other
   surface (a horizon's trace on a wall, a fault) are never split, so no other
   surface changes; circumcentres too close to them are not added.
+- Every other piece, and every single triangle of a curved surface, when
+  `refine_tilted_pieces` is true (the default) and `planar_angle_bound` is
+  positive, is refined for size alone, by the same rule: a huge triangle of a
+  curved horizon or fault is as bare a wall as a flat one. Its new points are
+  rounded onto its plane (within the coplanarity tolerance above); an edge
+  whose triangles are all refined is split at its midpoint where a
+  circumcentre comes too close to it, in every triangle on it, so the
+  surfaces stay conforming; edges of a piece left as it is are not split.
+  Small angles are not chased there: around the needles of a curved surface
+  that would refine every triangle nearby.
 
 Why: generated box walls and flat tops often come as fans of needles (edges
 of kilometres meeting at a fraction of a degree), or as strips between a
@@ -65,7 +80,8 @@ tetrahedralization takes thousands of Steiner points.
 A piece is left as it was when its triangulation cannot be checked to cover
 it exactly (a point on one of its constraints, a boundary that crosses
 itself, a triangle that flips in floating point); if that happens to a piece
-being refined, no piece is refined.
+being refined, that piece is left out of the refinement and it starts again
+(after 16 such pieces, no piece is refined).
 
 The model must be valid (`validate_geological_model()`).
 
@@ -74,6 +90,11 @@ The model must be valid (`validate_geological_model()`).
     \cgalParamDescription{smallest angle (degrees) aimed at on axis-plane pieces; 0 re-triangulates without new points}
     \cgalParamType{`double`}
     \cgalParamDefault{10}
+  \cgalParamNEnd
+  \cgalParamNBegin{refine_tilted_pieces}
+    \cgalParamDescription{whether pieces off the axis planes and single triangles of curved surfaces get new points for size}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 */
@@ -85,7 +106,8 @@ Planar_retriangulation_report retriangulate_planar_patches(const Geological_mode
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const double bound = choose_parameter(get_parameter(np, internal_np::planar_angle_bound), 10.);
-  internal::Planar_pieces<GeomTraits> pieces(input, bound);
+  const bool tilted = choose_parameter(get_parameter(np, internal_np::refine_tilted_pieces), true);
+  internal::Planar_pieces<GeomTraits> pieces(input, bound, tilted);
   return pieces.run(output);
 }
 

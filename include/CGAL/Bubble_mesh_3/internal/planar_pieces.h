@@ -8,13 +8,17 @@
 
 // The machinery of retriangulate_planar_patches(): planar pieces of the
 // patches, each triangulated in its plane by a 2D constrained Delaunay
-// triangulation, pieces of axis planes refined by circumcentres.
+// triangulation, refined by circumcentres (axis-plane pieces for angles and
+// size, tilted pieces and single triangles of curved surfaces for size).
 //
-// Exactness: points are only added where the double coordinates are exact -
-// inside an axis plane (its constant coordinate copied) and on an edge whose
-// rounded midpoint is exactly collinear with its ends (checked) - so every
-// piece stays exactly planar and every split edge exactly straight, and the
-// recovery's exact plane groups (recover_surface.h) still see them as planes.
+// Exactness: inside an axis plane new points copy its constant coordinate, and
+// an edge in an axis plane keeps that coordinate at its midpoint, so axis
+// planes stay exactly planar. Elsewhere new points are rounded: a point lifted
+// from a tilted piece's frame, or an edge's rounded midpoint, lies within a few
+// rounding units of the plane or line it was computed on, inside the tolerance
+// under which the recovery's plane groups (recover_surface.h) and the pieces
+// here count triangles as coplanar (near_coplanarity.h); a point off by more is
+// not added.
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h> // smallest_triangle_angle
@@ -37,6 +41,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -51,10 +56,12 @@ What `retriangulate_planar_patches()` did. Angles are in degrees.
 */
 struct Planar_retriangulation_report
 {
-  std::size_t number_of_pieces = 0;                 ///< planar pieces (two or more triangles, or one in an axis plane)
+  std::size_t number_of_pieces = 0;                 ///< planar pieces (two or more triangles, or one in an axis plane or given new points)
   std::size_t number_of_retriangulated_pieces = 0;  ///< of those, the pieces given a new triangulation
   std::size_t number_of_refined_pieces = 0;         ///< of those, the pieces that got new points
-  std::size_t number_of_points_added = 0;           ///< new points (inside axis-plane pieces and on edges between them)
+  std::size_t number_of_points_added = 0;           ///< new points (inside pieces and on edges between them)
+  std::size_t number_of_refined_tilted_pieces = 0;  ///< of the refined pieces, those not in an axis plane (curved surfaces' triangles)
+  std::size_t number_of_excluded_pieces = 0;        ///< pieces left unrefined because their refined triangulation failed its check
   std::size_t number_of_triangles_before = 0;       ///< triangles of the re-triangulated pieces, before
   std::size_t number_of_triangles_after = 0;        ///< and after
   std::size_t number_of_small_angle_triangles_before = 0; ///< of those, with an angle under 10 degrees, before
@@ -67,7 +74,10 @@ struct Planar_retriangulation_report
 inline std::ostream& operator<<(std::ostream& os, const Planar_retriangulation_report& r)
 {
   return os << r.number_of_retriangulated_pieces << " of " << r.number_of_pieces << " re-triangulated, "
-            << r.number_of_refined_pieces << " with " << r.number_of_points_added << " new points; their triangles "
+            << r.number_of_refined_pieces << " with " << r.number_of_points_added << " new points ("
+            << r.number_of_refined_tilted_pieces << " tilted"
+            << (r.number_of_excluded_pieces ? ", " + std::to_string(r.number_of_excluded_pieces) + " left unrefined" : std::string())
+            << "); their triangles "
             << r.number_of_triangles_before << " -> " << r.number_of_triangles_after << ", under 10 deg "
             << r.number_of_small_angle_triangles_before << " -> " << r.number_of_small_angle_triangles_after
             << ", smallest angle " << r.min_angle_before << " -> " << r.min_angle_after << " deg";
@@ -111,11 +121,24 @@ class Planar_pieces
     CGAL::Orientation up = CGAL::POSITIVE; // the piece's orientation in that projection
   };
 
+  static constexpr std::size_t none = std::size_t(-1);
+
+  // Off the axis planes a triangle is refined only when it is twice as wide
+  // as the size wanted there (the input's own triangles near the median
+  // edge stay; with a factor 1, modelA2 got three times the bubbles), and a
+  // single triangle only when its angles are at least 20 degrees: splitting
+  // a needle's long edge makes two needles, and on walls that are planes
+  // only up to rounding, needles split so could not be recovered (modelA2).
+  static constexpr double tilted_size_factor = 2.;
+  static constexpr double tilted_angle_bound = 20.;
+
 public:
-  Planar_pieces(const Model& input, double angle_bound)
+  // `refine_tilted`: whether pieces off the axis planes (and single
+  // triangles of curved surfaces) get points for size too
+  Planar_pieces(const Model& input, double angle_bound, bool refine_tilted)
     : in_(input), np_(input.number_of_points()), nt_(input.number_of_triangles()),
       sin_bound_(std::sin((std::min)(angle_bound, 34.) * CGAL_PI / 180.)), refine_(angle_bound > 0.),
-      tolerance_(coplanarity_tolerance(input))
+      refine_tilted_(refine_tilted), tolerance_(coplanarity_tolerance(input))
   {
     build_edges();
     build_pieces();
@@ -124,9 +147,27 @@ public:
   Planar_retriangulation_report run(Model& out)
   {
     Planar_retriangulation_report report;
-    if(refine_ && refine_all() && write(out, report)) return report;
-    // a piece being refined failed its check: refine none (its neighbours
-    // may have points on the edges they share with it)
+    if(refine_)
+    {
+      // A refined piece whose triangulation fails its check is left out and
+      // the refinement starts again (its neighbours may have points on the
+      // edges they share with it); after a few such failures nothing is refined.
+      std::size_t excluded = 0;
+      for(int attempt = 0; attempt < 16; ++attempt)
+      {
+        std::size_t failed = refine_all();
+        if(failed == none) failed = write(out, report);
+        if(failed == none)
+        {
+          report.number_of_excluded_pieces = excluded;
+          return report;
+        }
+        unrefine();
+        excluded_[failed] = 1;
+        ++excluded;
+        mark_soft_edges();
+      }
+    }
     unrefine();
     write(out, report);
     return report;
@@ -140,8 +181,8 @@ private:
     for(auto& l : inner_) l.clear();
   }
 
-  // writes the model; false if a piece with new points failed its check
-  bool write(Model& out, Planar_retriangulation_report& report) const
+  // writes the model; the first piece with new points that failed its check, or `none`
+  std::size_t write(Model& out, Planar_retriangulation_report& report) const
   {
     report = Planar_retriangulation_report();
     out = Model();
@@ -157,12 +198,12 @@ private:
     {
       const std::vector<std::size_t>& ts = pieces_[p];
       const std::size_t first = ts.front();
-      const bool is_piece = ts.size() > 1 || frames_[p].axis >= 0;
       const bool refined = !inner_[p].empty() || boundary_has_new_points(p);
+      const bool is_piece = ts.size() > 1 || frames_[p].axis >= 0 || refined;
       if(is_piece) ++report.number_of_pieces;
       if(!is_piece || !triangulate(p, tris))
       {
-        if(refined) return false;
+        if(refined) return p;
         for(std::size_t t : ts)
           out.add_triangle(in_.triangle(t)[0], in_.triangle(t)[1], in_.triangle(t)[2], in_.patch_of_triangle(t),
                            in_.triangle_source(t));
@@ -170,6 +211,7 @@ private:
       }
       ++report.number_of_retriangulated_pieces;
       if(refined) ++report.number_of_refined_pieces;
+      if(refined && frames_[p].axis < 0) ++report.number_of_refined_tilted_pieces;
       report.number_of_triangles_before += ts.size();
       report.number_of_triangles_after += tris.size();
       for(std::size_t t : ts)
@@ -187,7 +229,7 @@ private:
         out.add_triangle(t[0], t[1], t[2], in_.patch_of_triangle(first), in_.triangle_source(first));
       }
     }
-    return true;
+    return none;
   }
 
   const Point_3& point(std::size_t id) const { return id < np_ ? in_.point(id) : extra_[id - np_]; }
@@ -263,14 +305,29 @@ private:
     frames_.resize(pieces_.size());
     for(std::size_t p = 0; p < pieces_.size(); ++p) frames_[p] = frame(pieces_[p]);
 
-    // edges that may be split: every triangle on them is in a piece being refined
+    excluded_.assign(pieces_.size(), 0);
+    well_shaped_.assign(pieces_.size(), 1);
+    for(std::size_t p = 0; p < pieces_.size(); ++p)
+      if(pieces_[p].size() == 1)
+        well_shaped_[p] = angle(in_.triangle(pieces_[p].front())) >= tilted_angle_bound;
+    mark_soft_edges();
+  }
+
+  // whether piece `p` gets new points
+  bool refinable(std::size_t p) const
+  {
+    return refine_ && !excluded_[p] && (frames_[p].axis >= 0 || (refine_tilted_ && well_shaped_[p]));
+  }
+
+  // edges that may be split: every triangle on them is in a piece being refined
+  void mark_soft_edges()
+  {
     soft_.assign(edge_ends_.size(), 0);
-    if(!refine_) return;
     for(std::size_t e = 0; e < edge_ends_.size(); ++e)
     {
       if(free_[e]) continue;
       bool soft = true;
-      for(std::size_t t : edge_tris_[e]) soft = soft && frames_[piece_of_[t]].axis >= 0;
+      for(std::size_t t : edge_tris_[e]) soft = soft && refinable(piece_of_[t]);
       soft_[e] = soft;
     }
   }
@@ -316,9 +373,11 @@ private:
     return Point_2(d * f.e1, d * f.e2);
   }
 
-  // a point of an axis plane from its 2D coordinates: exactly on the plane
+  // a point of the piece's plane from its 2D coordinates: exactly on an axis
+  // plane, within rounding of a tilted one
   static Point_3 lift(const Frame& f, const Point_2& q)
   {
+    if(f.axis < 0) return f.origin + CGAL::to_double(q.x()) * f.e1 + CGAL::to_double(q.y()) * f.e2;
     std::array<double, 3> c;
     c[std::size_t(f.axis)] = f.level;
     c[std::size_t((f.axis + 1) % 3)] = CGAL::to_double(q.x());
@@ -443,9 +502,9 @@ private:
 
   // ---- refinement of axis-plane pieces ---------------------------------------------
 
-  // refines every axis-plane piece until no edge between them is split any
-  // more; false if a piece's triangulation failed its check
-  bool refine_all()
+  // refines every refinable piece until no edge between them is split any
+  // more; the first piece whose triangulation failed its check, or `none`
+  std::size_t refine_all()
   {
     std::vector<double> lengths;
     lengths.reserve(edge_ends_.size());
@@ -459,10 +518,10 @@ private:
       size_cap_ = lengths[lengths.size() / 2];
     }
     // the angle rule's points, and those of the size rule: about one per
-    // 0.43 cap^2 of axis-plane area, graded towards the finer borders
+    // 0.43 cap^2 of refined area, graded towards the finer borders
     double axis_area = 0.;
     for(std::size_t p = 0; p < pieces_.size(); ++p)
-      if(frames_[p].axis >= 0)
+      if(refinable(p))
         for(std::size_t t : pieces_[p])
         {
           const Triangle& tri = in_.triangle(t);
@@ -476,14 +535,14 @@ private:
       bool split = false;
       for(std::size_t p = 0; p < pieces_.size(); ++p)
       {
-        if(frames_[p].axis < 0) continue;
+        if(!refinable(p)) continue;
         int r = refine(p);
-        if(r < 0) return false;
+        if(r < 0) return p;
         split = split || r > 0;
       }
       if(!split) break;
     }
-    return true;
+    return none;
   }
 
   // -1: the check failed; 1: an edge was split (its other pieces need another look); 0: done
@@ -525,8 +584,11 @@ private:
             const double shortest = (std::min)({la, lb, lc});
             const double others = shortest == la ? lb * lc : shortest == lb ? la * lc : la * lb;
             const double r2 = CGAL::to_double(CGAL::squared_radius(a, b, c));
-            if(twice_area >= sin_bound_ * std::sqrt(others) &&
-               !(3. * r2 > CGAL::square(target_size(sources, CGAL::circumcenter(a, b, c)))))
+            // the angle rule on axis planes only: on curved surfaces it would
+            // chase the input's needles across every triangle around them
+            const bool angle_ok = f.axis < 0 || twice_area >= sin_bound_ * std::sqrt(others);
+            const double wide = f.axis < 0 ? tilted_size_factor : 1.;
+            if(angle_ok && !(3. * r2 > CGAL::square(wide * target_size(sources, CGAL::circumcenter(a, b, c)))))
               continue;
             Bad bad{r2,
                     {{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}},
@@ -569,6 +631,7 @@ private:
         const typename CDT::Face_handle at = cdt.locate(c, lt, li, worst);
         if(lt != CDT::FACE || at->info() != 1) { given_up.insert(worst_key); continue; }
         const Point_3 q = lift(f, c);
+        if(f.axis < 0 && !on_piece_plane(p, q)) { given_up.insert(worst_key); continue; }
         const std::size_t nv = cdt.number_of_vertices();
         const typename CDT::Vertex_handle v = cdt.insert(to_2d(f, q), at);
         if(cdt.number_of_vertices() != nv + 1) { given_up.insert(worst_key); continue; }
@@ -627,7 +690,16 @@ private:
     return h;
   }
 
-  // splits subsegment `s` at its midpoint if that is exactly on the edge; false if not
+  // whether `q` lies on the plane of piece `p` within the coplanarity tolerance
+  bool on_piece_plane(std::size_t p, const Point_3& q) const
+  {
+    const auto& t = in_.triangle(pieces_[p].front());
+    return is_nearly_coplanar(in_.point(t[0]), in_.point(t[1]), in_.point(t[2]), q, tolerance_);
+  }
+
+  // splits subsegment `s` at its midpoint if that lies on the edge (exactly,
+  // or within the coplanarity tolerance off the axis planes) and on the
+  // planes of the pieces around it; false if not
   bool split(const Subsegment& s)
   {
     const Point_3& a = point(s.u);
@@ -636,7 +708,19 @@ private:
     const Point_3 m = CGAL::midpoint(a, b);
     const Point_3& e0 = in_.point(edge_ends_[s.edge][0]);
     const Point_3& e1 = in_.point(edge_ends_[s.edge][1]);
-    if(!CGAL::collinear(e0, e1, m) || !CGAL::collinear_are_strictly_ordered_along_line(a, m, b)) return false;
+    if(!(CGAL::to_double((m - a) * (b - a)) > 0. && CGAL::to_double((m - b) * (a - b)) > 0.)) return false;
+    bool tilted = false;
+    for(std::size_t t : edge_tris_[s.edge]) tilted = tilted || frames_[piece_of_[t]].axis < 0;
+    if(!tilted && !CGAL::collinear(e0, e1, m)) return false; // axis planes stay exact
+    if(tilted)
+    {
+      const double l2 = CGAL::to_double(CGAL::squared_distance(e0, e1));
+      if(!(CGAL::to_double(CGAL::squared_distance(m, typename GeomTraits::Line_3(e0, e1))) <= tolerance_ * tolerance_) ||
+         l2 <= 0.)
+        return false;
+      for(std::size_t t : edge_tris_[s.edge])
+        if(!on_piece_plane(piece_of_[t], m)) return false;
+    }
     const std::size_t id = np_ + extra_.size();
     extra_.push_back(m);
     const double t = CGAL::to_double((m - e0) * (e1 - e0));
@@ -649,6 +733,7 @@ private:
   const std::size_t np_, nt_;
   const double sin_bound_;
   const bool refine_;
+  const bool refine_tilted_;
   const double tolerance_; // coplanar up to the rounding of the points (near_coplanarity.h)
   double min_split_length_ = 0.;
   double size_cap_ = std::numeric_limits<double>::infinity(); // the median input edge
@@ -658,7 +743,9 @@ private:
   std::vector<std::vector<std::size_t> > edge_tris_;     // triangles of each edge
   std::vector<std::array<std::size_t, 3> > tri_edges_;   // edge k joins corners k and k+1
   std::vector<char> free_;                               // inside a piece
-  std::vector<char> soft_;                               // may be split: only axis-plane pieces on it
+  std::vector<char> soft_;                               // may be split: only refinable pieces on it
+  std::vector<char> well_shaped_;                        // not a single triangle under tilted_angle_bound
+  std::vector<char> excluded_;                           // pieces whose refinement failed: not refined
 
   std::vector<std::vector<std::size_t> > pieces_;        // their triangles, in the input's order
   std::vector<std::size_t> piece_of_;                    // of each triangle
