@@ -55,15 +55,19 @@ piece covers the same polygon as before.
   piece's border and on the curves inside it, growing by half the distance
   from them, at most the median input edge of the model (a wall or a bottom
   given as two huge triangles would stay bare: the bubbles beside it would
-  have no neighbour on that side). An edge it shares only with other
-  such pieces is split at its midpoint (exactly on the edge) where a
-  circumcentre would come too close to it. Edges shared with any other
-  surface (a horizon's trace on a wall, a fault) are never split, so no other
-  surface changes; circumcentres too close to them are not added.
-- Every other piece, and every single triangle of a curved surface, when
-  `refine_tilted_pieces` is true (the default) and `planar_angle_bound` is
-  positive, is refined for size alone, by the same rule: a huge triangle of a
-  curved horizon or fault is as bare a wall as a flat one. Its new points are
+  have no neighbour on that side). An edge it shares only with pieces being
+  refined is split at its midpoint (exactly on the edge) where a
+  circumcentre would come too close to it. Edges shared with a triangle that
+  is not refined (a needle of a fault, say, or with
+  `refine_tilted_pieces(false)` any surface off the axis planes) are never
+  split, so that surface does not change; circumcentres too close to them
+  are not added.
+- Every other piece, and every single triangle of a curved surface whose
+  angles are all at least 20 degrees, when `refine_tilted_pieces` is true
+  (the default) and `planar_angle_bound` is positive, is refined for size
+  alone, where a triangle is more than twice as wide as the size above: a
+  huge triangle of a curved horizon or fault is as bare a wall as a flat one
+  (twice: the input's own triangles near the median edge stay). Its new points are
   rounded onto its plane (within the coplanarity tolerance above); an edge
   whose triangles are all refined is split at its midpoint where a
   circumcentre comes too close to it, in every triangle on it, so the
