@@ -22,7 +22,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <functional>
-#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -146,39 +146,6 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   auto start = [&](const char* name) { if(stage) stage(name); };
 
   Real_timer timer;
-  // the stages below see the re-meshed model: same regions and patches, new points and triangles
-  Geological_model_3<GeomTraits> remeshed;
-  report->surfaces_remeshed = choose_parameter(get_parameter(np, internal_np::remesh_input_surfaces), false);
-  if(report->surfaces_remeshed)
-  {
-    start("surface remeshing");
-    timer.start();
-    report->surface_remeshing = remesh_surfaces(input_model, remeshed, np);
-    timer.stop();
-    // the later stages assume a valid model: a re-meshing that broke it is an error, not a wrong mesh
-    try { validate_geological_model(remeshed); }
-    catch(const Geological_model_error& e)
-    {
-      throw Geological_model_error(std::string("the re-meshed surfaces (remesh_surfaces()) are not a valid model; "
-                                               "mesh without re-meshing or with another size: ") + e.what());
-    }
-    report->time_surface_remeshing = timer.time();
-    timer.reset();
-  }
-  // Planar pieces (box walls, flat tops) as fans of needles would force poor
-  // tetrahedra and thousands of Steiner points; their own Delaunay
-  // triangulation covers the same polygon. Re-meshed surfaces need none.
-  Geological_model_3<GeomTraits> retriangulated;
-  report->planar_patches_retriangulated =
-    !report->surfaces_remeshed && !choose_parameter(get_parameter(np, internal_np::keep_input_triangles), false);
-  if(report->planar_patches_retriangulated)
-    report->planar_retriangulation = retriangulate_planar_patches(input_model, retriangulated, np);
-  const Geological_model_3<GeomTraits>& model =
-    report->surfaces_remeshed ? remeshed : report->planar_patches_retriangulated ? retriangulated : input_model;
-
-  // which surface vertices are Steiner points, and on which input triangles
-  // they lie: the sliver removal may collapse them again
-  Surface_vertex_supports<typename Mesh_complex_3<GeomTraits>::Triangulation> supports;
   // runs one stage, its seconds added to `seconds` (also when it throws: a
   // stage run twice counts both runs)
   auto timed = [&](const char* name, double& seconds, const auto& run) {
@@ -195,12 +162,41 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     timer.stop();
     seconds += timer.time();
   };
+  // the stages below see the re-meshed model: same regions and patches, new points and triangles
+  Geological_model_3<GeomTraits> remeshed;
+  report->surfaces_remeshed = choose_parameter(get_parameter(np, internal_np::remesh_input_surfaces), false);
+  if(report->surfaces_remeshed)
+  {
+    timed("surface remeshing", report->time_surface_remeshing,
+          [&] { report->surface_remeshing = remesh_surfaces(input_model, remeshed, np); });
+    // the later stages assume a valid model: a re-meshing that broke it is an error, not a wrong mesh
+    try { validate_geological_model(remeshed); }
+    catch(const Geological_model_error& e)
+    {
+      throw Geological_model_error(std::string("the re-meshed surfaces (remesh_surfaces()) are not a valid model; "
+                                               "mesh without re-meshing or with another size: ") + e.what());
+    }
+  }
+  // Planar pieces (box walls, flat tops) as fans of needles would force poor
+  // tetrahedra and thousands of Steiner points; their own Delaunay
+  // triangulation covers the same polygon. Re-meshed surfaces need none.
+  Geological_model_3<GeomTraits> retriangulated;
+  report->planar_patches_retriangulated =
+    !report->surfaces_remeshed && !choose_parameter(get_parameter(np, internal_np::keep_input_triangles), false);
+  if(report->planar_patches_retriangulated)
+    report->planar_retriangulation = retriangulate_planar_patches(input_model, retriangulated, np);
+  const Geological_model_3<GeomTraits>& model =
+    report->surfaces_remeshed ? remeshed : report->planar_patches_retriangulated ? retriangulated : input_model;
+
+  // which surface vertices are Steiner points, and on which input triangles
+  // they lie: the sliver removal may collapse them again
+  Surface_vertex_supports<typename Mesh_complex_3<GeomTraits>::Triangulation> supports;
   auto stages_1_to_5 = [&](const Geological_model_3<GeomTraits>& meshed) {
     std::vector<Bubble<GeomTraits> > surface_bubbles;
-    std::unique_ptr<Surface_bubble_sizing_field<GeomTraits> > sizing;
+    std::optional<Surface_bubble_sizing_field<GeomTraits> > sizing; // built with the surface bubbles, in their time
     timed("surface bubbles", report->time_surface_bubbles, [&] {
       surface_bubbles = place_surface_bubbles(meshed, np);
-      sizing.reset(new Surface_bubble_sizing_field<GeomTraits>(meshed, surface_bubbles, np));
+      sizing.emplace(meshed, surface_bubbles, np);
     });
     report->number_of_surface_bubbles = surface_bubbles.size();
 

@@ -579,6 +579,28 @@ void assert_same_surface(const Model& m, const Model& g, std::size_t p)
   assert(std::sqrt((a.vector_area - b.vector_area).squared_length()) <= 1e-12 * a.area);
 }
 
+// the median length of the model's edges
+double median_edge_length(const Model& m)
+{
+  std::set<std::pair<std::size_t, std::size_t> > edges;
+  for(const auto& t : m.triangles())
+    for(int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  std::vector<double> lengths;
+  for(const auto& e : edges) lengths.push_back(std::sqrt(CGAL::squared_distance(m.point(e.first), m.point(e.second))));
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+// the longest edge of patch `p`
+double longest_patch_edge(const Model& x, std::size_t p)
+{
+  double longest = 0.;
+  for(const auto& t : patch_surface(x, p).triangles)
+    for(int k = 0; k < 3; ++k)
+      longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(x.point(t[k]), x.point(t[(k + 1) % 3]))));
+  return longest;
+}
+
 // The unit square times [0, 0.1], one region; patches 0 'bottom' (a grid),
 // 1 'top' and 2 'walls'. With `flat_top` the top is two triangles and each
 // wall a fan from a top corner to the bottom nodes; else the top is a grid
@@ -792,23 +814,8 @@ void test_planar_refinement()
   for(std::size_t p : {bottom, top, walls}) assert_same_surface(m, g, p);
   // the top's two huge triangles are filled to the model's median input edge
   // (graded from the points on its border): no bare wall left
-  std::set<std::pair<std::size_t, std::size_t> > edges;
-  for(const auto& t : m.triangles())
-    for(int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
-  std::vector<double> lengths;
-  for(const auto& e : edges) lengths.push_back(std::sqrt(CGAL::squared_distance(m.point(e.first), m.point(e.second))));
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  const double median = lengths[lengths.size() / 2];
-  auto longest_top_edge = [&](const Model& x) {
-    double longest = 0.;
-    for(std::size_t t = 0; t < x.number_of_triangles(); ++t)
-      if(x.patch_of_triangle(t) == top)
-        for(int k = 0; k < 3; ++k)
-          longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(x.point(x.triangle(t)[k]),
-                                                                          x.point(x.triangle(t)[(k + 1) % 3]))));
-    return longest;
-  };
-  const double longest_before = longest_top_edge(m), longest_after = longest_top_edge(g);
+  const double median = median_edge_length(m);
+  const double longest_before = longest_patch_edge(m, top), longest_after = longest_patch_edge(g, top);
   std::cout << "  top: longest edge " << longest_before << " -> " << longest_after << ", median input edge " << median
             << std::endl;
   assert(longest_before > 2. * median && longest_after <= 1.2 * median);
@@ -858,21 +865,8 @@ void test_tilted_refinement()
   assert(new_points > 0);
 
   // its triangles are no longer much wider than the model's median edge
-  std::vector<double> lengths;
-  std::set<std::pair<std::size_t, std::size_t> > edges;
-  for(const auto& t : m.triangles())
-    for(int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
-  for(const auto& e : edges) lengths.push_back(std::sqrt(CGAL::squared_distance(m.point(e.first), m.point(e.second))));
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  const double median = lengths[lengths.size() / 2];
-  auto longest = [](const Model& x, const Patch_surface& s) {
-    double l = 0.;
-    for(const auto& t : s.triangles)
-      for(int k = 0; k < 3; ++k)
-        l = (std::max)(l, std::sqrt(CGAL::squared_distance(x.point(t[k]), x.point(t[(k + 1) % 3]))));
-    return l;
-  };
-  const double longest_before = longest(m, before), longest_after = longest(g, after);
+  const double median = median_edge_length(m);
+  const double longest_before = longest_patch_edge(m, fault), longest_after = longest_patch_edge(g, fault);
   std::cout << "  fault: " << before.triangles.size() << " -> " << after.triangles.size() << " triangles, longest edge "
             << longest_before << " -> " << longest_after << ", median input edge " << median << std::endl;
   assert(longest_before > 2.5 * median && longest_after <= 2.5 * median);

@@ -142,6 +142,7 @@ public:
   {
     build_edges();
     build_pieces();
+    if(refine_) measure_edges();
   }
 
   Planar_retriangulation_report run(Model& out)
@@ -261,6 +262,23 @@ private:
         tri_edges_[t][k] = ins.first->second;
       }
     edge_points_.resize(edge_ends_.size());
+  }
+
+  // the input's shortest and median edge: bounds of the refinement, the same
+  // for every attempt of run()
+  void measure_edges()
+  {
+    std::vector<double> lengths;
+    lengths.reserve(edge_ends_.size());
+    for(const auto& e : edge_ends_)
+      lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(in_.point(e[0]), in_.point(e[1])))));
+    min_split_length_ = lengths.empty() ? std::numeric_limits<double>::infinity()
+                                        : *std::min_element(lengths.begin(), lengths.end());
+    if(!lengths.empty())
+    {
+      std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+      size_cap_ = lengths[lengths.size() / 2];
+    }
   }
 
   // whether triangle `t` runs from a to b (else from b to a)
@@ -506,29 +524,18 @@ private:
   // more; the first piece whose triangulation failed its check, or `none`
   std::size_t refine_all()
   {
-    std::vector<double> lengths;
-    lengths.reserve(edge_ends_.size());
-    for(const auto& e : edge_ends_)
-      lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(in_.point(e[0]), in_.point(e[1])))));
-    min_split_length_ = lengths.empty() ? std::numeric_limits<double>::infinity()
-                                        : *std::min_element(lengths.begin(), lengths.end());
-    if(!lengths.empty())
-    {
-      std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-      size_cap_ = lengths[lengths.size() / 2];
-    }
     // the angle rule's points, and those of the size rule: about one per
     // 0.43 cap^2 of refined area, graded towards the finer borders
-    double axis_area = 0.;
+    double refined_area = 0.;
     for(std::size_t p = 0; p < pieces_.size(); ++p)
       if(refinable(p))
         for(std::size_t t : pieces_[p])
         {
           const Triangle& tri = in_.triangle(t);
-          axis_area += 0.5 * std::sqrt(CGAL::to_double(
+          refined_area += 0.5 * std::sqrt(CGAL::to_double(
                                CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0])).squared_length()));
         }
-    const double size_points = std::isfinite(size_cap_) && size_cap_ > 0. ? 2. * axis_area / (0.43 * size_cap_ * size_cap_) : 0.;
+    const double size_points = std::isfinite(size_cap_) && size_cap_ > 0. ? 2. * refined_area / (0.43 * size_cap_ * size_cap_) : 0.;
     budget_ = 2 * np_ + 1000 + std::size_t((std::min)(size_points, 1e7));
     for(int round = 0; round < 100; ++round)
     {
@@ -714,9 +721,8 @@ private:
     if(!tilted && !CGAL::collinear(e0, e1, m)) return false; // axis planes stay exact
     if(tilted)
     {
-      const double l2 = CGAL::to_double(CGAL::squared_distance(e0, e1));
-      if(!(CGAL::to_double(CGAL::squared_distance(m, typename GeomTraits::Line_3(e0, e1))) <= tolerance_ * tolerance_) ||
-         l2 <= 0.)
+      // on the line as well as on the planes: a fault's free edge has one plane only
+      if(!(CGAL::to_double(CGAL::squared_distance(m, typename GeomTraits::Line_3(e0, e1))) <= tolerance_ * tolerance_))
         return false;
       for(std::size_t t : edge_tris_[s.edge])
         if(!on_piece_plane(piece_of_[t], m)) return false;
