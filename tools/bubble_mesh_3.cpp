@@ -298,6 +298,9 @@ Options parse_options(int argc, char** argv)
     usage_error("--size-grading is a rule of --remesh-surfaces: give both");
   if(o.refine_ribbons && !o.remesh_surfaces)
     usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
+  if(!o.refine_tilted_pieces && (o.remesh_surfaces || o.keep_input_triangles))
+    usage_error("--axis-planes-only chooses which planar pieces get new points: it does nothing with " +
+                std::string(o.remesh_surfaces ? "--remesh-surfaces" : "--keep-input-triangles"));
   if(o.section_given && o.section_svg.empty())
     usage_error("--section chooses the plane of --section-svg: give both");
   if(o.threads < 0) usage_error("--threads must not be negative");

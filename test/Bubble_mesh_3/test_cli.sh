@@ -298,6 +298,12 @@ run "$tmp/cube.obj" --keep-input-triangles -o "$tmp/k.mesh" --quality-json "$tmp
 check "--keep-input-triangles exits 0" test "$rc" -eq 0
 check "--keep-input-triangles: no re-triangulation" test -z "$(echo "$out" | grep 'planar pieces')"
 check "--help lists --keep-input-triangles" bash -c "'$exe' --help | grep -q -- --keep-input-triangles"
+run "$tmp/cube.obj" --axis-planes-only --keep-input-triangles
+check "--axis-planes-only --keep-input-triangles exits 2" test "$rc" -eq 2
+check "--axis-planes-only --keep-input-triangles named" contains "$err" "--axis-planes-only"
+run "$tmp/cube.obj" --axis-planes-only -o "$tmp/ax.mesh"
+check "--axis-planes-only exits 0" test "$rc" -eq 0
+check "--axis-planes-only: no tilted piece refined" contains "$out" "(0 tilted"
 check "planar pieces re-triangulated: better smallest dihedral, same volume" python3 -c "
 import json,sys
 p=json.load(open('$tmp/qp.json'))['all']; k=json.load(open('$tmp/qk.json'))['all']
