@@ -58,7 +58,8 @@ namespace {
 const char* usage =
   "Usage: bench_relaxation throughput [--edge-length E] [--steps N] [--warmup W] [--threads LIST] [--skin LIST]\n"
   "       bench_relaxation alpha [MODEL ...] [--threads N] [--skin S] [--rounds]\n"
-  "                            [--remesh-surfaces | --planar] [--repulsive] [--by-wall]\n"
+  "                            [--remesh-surfaces | --planar [--tilted-size-factor F]]\n"
+  "                            [--repulsive] [--by-wall]\n"
   "                            [--cell-edge-factor F] [--graded-cells G]\n"
   "                            [--damping C] [--resting R]\n"
   "\n"
@@ -95,7 +96,8 @@ const char* usage =
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
   "            defaults), as bubble_mesh_3 does by default with the surfaces kept;\n"
-  "            --planar-axis-only refines only the axis-plane pieces (refine_tilted_pieces(false)).\n"
+  "            --planar-axis-only refines only the axis-plane pieces (refine_tilted_pieces(false));\n"
+  "            --tilted-size-factor F passes its tilted_size_factor (default 2).\n"
   "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n"
   "            --by-wall also splits the interior bubbles by distance to the nearest\n"
   "            input triangle (in their radius) and, within 3 radii, by that triangle's\n"
@@ -305,7 +307,7 @@ void print_wall_classes(const Model& m, const std::vector<Bubble>& interior, con
 }
 
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, int planar, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting)
+                bool remesh, int planar, double tilted_factor, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -341,7 +343,8 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     {
       Model retriangulated;
       const BM::Planar_retriangulation_report pr =
-        BM::retriangulate_planar_patches(m, retriangulated, BM::parameters::refine_tilted_pieces(planar == 1));
+        BM::retriangulate_planar_patches(m, retriangulated, BM::parameters::refine_tilted_pieces(planar == 1,
+                                                                  BM::parameters::tilted_size_factor(tilted_factor)));
       std::cout << name << ": planar pieces re-triangulated, " << pr.number_of_points_added << " new points, "
                 << m.number_of_triangles() << " -> " << retriangulated.number_of_triangles() << " triangles" << std::endl;
       m = std::move(retriangulated);
@@ -457,6 +460,7 @@ int main(int argc, char** argv)
   std::vector<std::string> models;
   bool print_rounds = false, remesh = false, repulsive = false, by_wall = false;
   int planar = 0; // 1: retriangulate_planar_patches() defaults, 2: axis planes only
+  double tilted_factor = 2.; // its tilted_size_factor
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -484,6 +488,11 @@ int main(int argc, char** argv)
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
     else if(a == "--planar" && alpha) planar = 1;
     else if(a == "--planar-axis-only" && alpha) planar = 2;
+    else if(a == "--tilted-size-factor" && alpha && has_value)
+    {
+      tilted_factor = std::atof(argv[++i]);
+      if(!(tilted_factor >= 1.)) { std::cerr << "--tilted-size-factor takes a number >= 1, got '" << argv[i] << "'\n" << usage; return 2; }
+    }
     else if(a == "--repulsive" && alpha) repulsive = true;
     else if(a == "--by-wall" && alpha) by_wall = true;
     else if(a == "--threads" && has_value)
@@ -511,5 +520,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, repulsive, by_wall, cell_edge_factor, graded, damping, resting);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, tilted_factor, repulsive, by_wall, cell_edge_factor, graded, damping, resting);
 }

@@ -108,6 +108,12 @@ const char* usage_text =
 "                             under 20 degrees get new points where over twice as wide\n"
 "  --axis-planes-only         give new points to axis-plane pieces only (not to tilted\n"
 "                             pieces and curved surfaces' triangles)\n"
+"  --tilted-size-factor F     tilted pieces and curved surfaces' triangles get new points\n"
+"                             where over F times as wide as the size wanted (default 2);\n"
+"                             1.5: finer walls, better tetrahedra there, more of them\n"
+"                             (CloudSpin: 2.7 -> 2.0 % under 10 degrees, 35 % more tets);\n"
+"                             if the surface recovery then fails, the mesh is made with\n"
+"                             the axis planes only (as modelA2 at 1.5)\n"
 "  --size S                   target edge length of the re-meshed surfaces (with\n"
 "                             --remesh-surfaces): in model units, or with a % sign, of\n"
 "                             the bounding-box diagonal (e.g. 2%); default: the median\n"
@@ -171,6 +177,8 @@ struct Options
   bool keep_input_triangles = false;
   double planar_angle_bound = 10.;
   bool refine_tilted_pieces = true;
+  double tilted_size_factor = 2.;
+  bool tilted_size_factor_given = false;
   double size = 0.;          // absolute target edge length (0: not given)
   double relative_size = 0.; // fraction of the bounding-box diagonal (0: not given)
   // edges across a thin layer: Remeshing_sizing_field's elements_across_thickness
@@ -256,6 +264,11 @@ Options parse_options(int argc, char** argv)
     else if(a == "--keep-input-triangles") o.keep_input_triangles = true;
     else if(a == "--planar-angle-bound") o.planar_angle_bound = parse_double(a, value(a));
     else if(a == "--axis-planes-only") o.refine_tilted_pieces = false;
+    else if(a == "--tilted-size-factor")
+    {
+      o.tilted_size_factor = parse_double(a, value(a));
+      o.tilted_size_factor_given = true;
+    }
     else if(a == "--size")
     {
       std::string v = value(a);
@@ -301,6 +314,13 @@ Options parse_options(int argc, char** argv)
   if(!o.refine_tilted_pieces && (o.remesh_surfaces || o.keep_input_triangles))
     usage_error("--axis-planes-only chooses which planar pieces get new points: it does nothing with " +
                 std::string(o.remesh_surfaces ? "--remesh-surfaces" : "--keep-input-triangles"));
+  if(o.tilted_size_factor_given && (!o.refine_tilted_pieces || o.remesh_surfaces || o.keep_input_triangles))
+    usage_error("--tilted-size-factor sets which tilted pieces get new points: it does nothing with " +
+                std::string(!o.refine_tilted_pieces ? "--axis-planes-only"
+                            : o.remesh_surfaces     ? "--remesh-surfaces"
+                                                    : "--keep-input-triangles"));
+  if(!(o.tilted_size_factor >= 1. && o.tilted_size_factor <= 100.))
+    usage_error("--tilted-size-factor must be in [1, 100]");
   if(o.section_given && o.section_svg.empty())
     usage_error("--section chooses the plane of --section-svg: give both");
   if(o.threads < 0) usage_error("--threads must not be negative");
@@ -458,12 +478,13 @@ int main(int argc, char** argv)
                     BM::parameters::keep_input_triangles(opt.keep_input_triangles,
                     BM::parameters::planar_angle_bound(opt.planar_angle_bound,
                     BM::parameters::refine_tilted_pieces(opt.refine_tilted_pieces,
+                    BM::parameters::tilted_size_factor(opt.tilted_size_factor,
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
                     BM::parameters::elements_across_thickness(opt.layer_elements,
                     BM::parameters::size_grading(opt.size_grading,
                     BM::parameters::refine_ribbons(opt.refine_ribbons,
                     BM::parameters::number_of_population_rounds(opt.population_rounds,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));
@@ -522,7 +543,10 @@ int main(int argc, char** argv)
       std::cout << std::setprecision(4) << "planar pieces: " << pr << "\n" << std::defaultfloat;
       if(report.tilted_refinement_undone)
         std::cout << "note: the surface recovery failed with new points on tilted pieces (curved surfaces' "
-                     "triangles); the mesh was made again with only the axis-plane pieces refined\n";
+                     "triangles): "
+                  << report.tilted_refinement_undone_because
+                  << "; the mesh was made again with only the axis-plane pieces refined (--axis-planes-only "
+                     "skips the failed attempt)\n";
     }
     // sliver removal may add interior vertices: count them too, so that the total is the mesh's
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices

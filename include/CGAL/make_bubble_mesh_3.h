@@ -41,6 +41,7 @@ struct Bubble_mesh_report
   bool planar_patches_retriangulated = false; ///< whether planar pieces were re-triangulated (`retriangulate_planar_patches()`)
   Planar_retriangulation_report planar_retriangulation; ///< if they were
   bool tilted_refinement_undone = false;      ///< whether the mesh was made again without new points on tilted pieces (`refine_tilted_pieces(false)`) after the surface recovery failed with them
+  std::string tilted_refinement_undone_because; ///< then, the surface recovery's error (which input triangle it could not recover, and why)
   std::size_t number_of_surface_bubbles = 0;  ///< one per model point
   std::size_t number_of_initial_bubbles = 0;  ///< interior bubbles placed (stage 2)
   std::size_t number_of_relaxed_bubbles = 0;  ///< interior bubbles after relaxation and population control
@@ -220,7 +221,7 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     });
   };
   try { stages_1_to_5(model); }
-  catch(const Tetrahedralization_error&)
+  catch(const Tetrahedralization_error& error)
   {
     // The points rounded onto tilted pieces are the one thing here the
     // recovery has not met in the input: rather than fail, mesh again
@@ -228,6 +229,7 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     if(!report->planar_patches_retriangulated || report->planar_retriangulation.number_of_refined_tilted_pieces == 0)
       throw;
     report->tilted_refinement_undone = true;
+    report->tilted_refinement_undone_because = error.what();
     report->planar_retriangulation =
       retriangulate_planar_patches(input_model, retriangulated, parameters::refine_tilted_pieces(false, np));
     stages_1_to_5(retriangulated);

@@ -304,6 +304,13 @@ check "--axis-planes-only --keep-input-triangles named" contains "$err" "--axis-
 run "$tmp/cube.obj" --axis-planes-only -o "$tmp/ax.mesh"
 check "--axis-planes-only exits 0" test "$rc" -eq 0
 check "--axis-planes-only: no tilted piece refined" contains "$out" "(0 tilted"
+run "$tmp/cube.obj" --tilted-size-factor 1.5 --axis-planes-only
+check "--tilted-size-factor --axis-planes-only exits 2" test "$rc" -eq 2
+check "--tilted-size-factor --axis-planes-only named" contains "$err" "--tilted-size-factor"
+run "$tmp/cube.obj" --tilted-size-factor 0.5
+check "--tilted-size-factor 0.5 exits 2" test "$rc" -eq 2
+check "--tilted-size-factor 0.5 named" contains "$err" "--tilted-size-factor must be in [1, 100]"
+check "--help lists --tilted-size-factor" bash -c "'$exe' --help | grep -q -- --tilted-size-factor"
 check "planar pieces re-triangulated: better smallest dihedral, same volume" python3 -c "
 import json,sys
 p=json.load(open('$tmp/qp.json'))['all']; k=json.load(open('$tmp/qk.json'))['all']

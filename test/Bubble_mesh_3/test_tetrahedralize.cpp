@@ -871,6 +871,21 @@ void test_tilted_refinement()
             << longest_before << " -> " << longest_after << ", median input edge " << median << std::endl;
   assert(longest_before > 2.5 * median && longest_after <= 2.5 * median);
 
+  // tilted_size_factor sets how much wider than the size wanted a triangle
+  // may stay: smaller, the fault gets more points; huge, none
+  Model finer, unrefined;
+  const BM::Planar_retriangulation_report r_finer =
+    BM::retriangulate_planar_patches(m, finer, BM::parameters::tilted_size_factor(1.25));
+  BM::validate_geological_model(finer);
+  assert_same_surface(m, finer, fault);
+  std::cout << "  tilted_size_factor 1.25: " << r_finer.number_of_points_added << " new points (2: "
+            << r.number_of_points_added << "), longest fault edge " << longest_patch_edge(finer, fault) << std::endl;
+  assert(r_finer.number_of_points_added > r.number_of_points_added);
+  assert(patch_surface(finer, fault).triangles.size() > after.triangles.size());
+  assert(longest_patch_edge(finer, fault) <= longest_after);
+  BM::retriangulate_planar_patches(m, unrefined, BM::parameters::tilted_size_factor(100.));
+  assert(patch_surface(m, fault).triangles == patch_surface(unrefined, fault).triangles);
+
   const std::vector<Point_3> inside = jittered_lattice(BM::bbox(m), 0.04, 13);
   C3T3 c3t3;
   mesh_and_check("thin box with a coarse curved fault, its triangles refined", g, inside, c3t3);

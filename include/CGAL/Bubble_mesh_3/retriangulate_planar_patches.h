@@ -21,6 +21,7 @@ namespace Bubble_mesh_3 {
 namespace internal_np {
 enum planar_angle_bound_t { planar_angle_bound };
 enum refine_tilted_pieces_t { refine_tilted_pieces };
+enum tilted_size_factor_t { tilted_size_factor };
 } // namespace internal_np
 
 namespace parameters {
@@ -33,6 +34,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, planar_angle_bound)
 /// whether `retriangulate_planar_patches()` also gives new points for size to
 /// pieces off the axis planes and to single triangles of curved surfaces
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, refine_tilted_pieces)
+/// \ingroup PkgBubbleMesh3Ref
+/// how many times wider than the size wanted a triangle off the axis planes
+/// must be for `retriangulate_planar_patches()` to give it new points
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, tilted_size_factor)
 } // namespace parameters
 
 /*!
@@ -65,9 +70,11 @@ piece covers the same polygon as before.
 - Every other piece, and every single triangle of a curved surface whose
   angles are all at least 20 degrees, when `refine_tilted_pieces` is true
   (the default) and `planar_angle_bound` is positive, is refined for size
-  alone, where a triangle is more than twice as wide as the size above: a
-  huge triangle of a curved horizon or fault is as bare a wall as a flat one
-  (twice: the input's own triangles near the median edge stay). Its new points are
+  alone, where a triangle is more than `tilted_size_factor` (default 2)
+  times as wide as the size above: a huge triangle of a curved horizon or
+  fault is as bare a wall as a flat one (twice: the input's own triangles
+  near the median edge stay; 1.5 gave CloudSpin and modelA5 better meshes,
+  but modelA2's surface recovery failed, bench/README.md). Its new points are
   rounded onto its plane (within the coplanarity tolerance above); an edge
   whose triangles are all refined is split at its midpoint where a
   circumcentre comes too close to it, in every triangle on it, so the
@@ -100,6 +107,12 @@ The model must be valid (`validate_geological_model()`).
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
+  \cgalParamNBegin{tilted_size_factor}
+    \cgalParamDescription{how many times wider than the size wanted a triangle off the axis planes must be to get new points}
+    \cgalParamType{`double`}
+    \cgalParamDefault{2}
+    \cgalParamExtra{at least 1}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 */
 template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -111,7 +124,9 @@ Planar_retriangulation_report retriangulate_planar_patches(const Geological_mode
   using CGAL::parameters::get_parameter;
   const double bound = choose_parameter(get_parameter(np, internal_np::planar_angle_bound), 10.);
   const bool tilted = choose_parameter(get_parameter(np, internal_np::refine_tilted_pieces), true);
-  internal::Planar_pieces<GeomTraits> pieces(input, bound, tilted);
+  const double factor = choose_parameter(get_parameter(np, internal_np::tilted_size_factor), 2.);
+  CGAL_precondition_msg(factor >= 1., "tilted_size_factor must be at least 1");
+  internal::Planar_pieces<GeomTraits> pieces(input, bound, tilted, factor);
   return pieces.run(output);
 }
 

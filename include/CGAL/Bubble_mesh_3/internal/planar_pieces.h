@@ -123,22 +123,24 @@ class Planar_pieces
 
   static constexpr std::size_t none = std::size_t(-1);
 
-  // Off the axis planes a triangle is refined only when it is twice as wide
-  // as the size wanted there (the input's own triangles near the median
-  // edge stay; with a factor 1, modelA2 got three times the bubbles), and a
+  // Off the axis planes a triangle is refined only when it is twice (by
+  // default: `tilted_size_factor`) as wide as the size wanted there (the
+  // input's own triangles near the median edge stay; with a factor 1,
+  // modelA2 got three times the bubbles), and a
   // single triangle only when its angles are at least 20 degrees: splitting
   // a needle's long edge makes two needles, and on walls that are planes
   // only up to rounding, needles split so could not be recovered (modelA2).
-  static constexpr double tilted_size_factor = 2.;
   static constexpr double tilted_angle_bound = 20.;
 
 public:
   // `refine_tilted`: whether pieces off the axis planes (and single
-  // triangles of curved surfaces) get points for size too
-  Planar_pieces(const Model& input, double angle_bound, bool refine_tilted)
+  // triangles of curved surfaces) get points for size too, where a triangle
+  // is `tilted_size_factor` times as wide as the size wanted
+  Planar_pieces(const Model& input, double angle_bound, bool refine_tilted, double tilted_size_factor = 2.)
     : in_(input), np_(input.number_of_points()), nt_(input.number_of_triangles()),
       sin_bound_(std::sin((std::min)(angle_bound, 34.) * CGAL_PI / 180.)), refine_(angle_bound > 0.),
-      refine_tilted_(refine_tilted), tolerance_(coplanarity_tolerance(input))
+      refine_tilted_(refine_tilted), tilted_size_factor_(tilted_size_factor),
+      tolerance_(coplanarity_tolerance(input))
   {
     build_edges();
     build_pieces();
@@ -594,7 +596,7 @@ private:
             // the angle rule on axis planes only: on curved surfaces it would
             // chase the input's needles across every triangle around them
             const bool angle_ok = f.axis < 0 || twice_area >= sin_bound_ * std::sqrt(others);
-            const double wide = f.axis < 0 ? tilted_size_factor : 1.;
+            const double wide = f.axis < 0 ? tilted_size_factor_ : 1.;
             if(angle_ok && !(3. * r2 > CGAL::square(wide * target_size(sources, CGAL::circumcenter(a, b, c)))))
               continue;
             Bad bad{r2,
@@ -740,6 +742,7 @@ private:
   const double sin_bound_;
   const bool refine_;
   const bool refine_tilted_;
+  const double tilted_size_factor_;
   const double tolerance_; // coplanar up to the rounding of the points (near_coplanarity.h)
   double min_split_length_ = 0.;
   double size_cap_ = std::numeric_limits<double>::infinity(); // the median input edge
