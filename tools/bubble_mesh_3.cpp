@@ -538,6 +538,14 @@ int main(int argc, char** argv)
                 << " -> " << 100. * rr.share_of_edges_within_size << " %, largest region volume change "
                 << rr.max_relative_volume_error << ", curve distance " << rr.max_curve_distance
                 << " of the diagonal\n" << std::defaultfloat;
+    // a user who asked for a size should know where the mesh is finer, and why
+    if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size < rr.target_size)
+      std::cout << std::setprecision(4) << "note: thin layers or fault tips (thickness down to "
+                << rr.smallest_thickness << ") make edges as short as " << rr.smallest_thickness_size
+                << " there, under the target size " << rr.target_size << "; --layer-elements (now "
+                << opt.layer_elements << ") is the number of edges across them: with 1 they are twice as long, "
+                   "with 0 the rule is off\n"
+                << std::defaultfloat;
     if(report.planar_patches_retriangulated)
     {
       std::cout << std::setprecision(4) << "planar pieces: " << pr << "\n" << std::defaultfloat;

@@ -215,11 +215,14 @@ PY
 slab_triangles() { echo "$out" | sed -n 's/^surface remeshing: 12 -> \([0-9]*\) triangles.*/\1/p'; }
 run "$tmp/slab.obj" --remesh-surfaces --size 25% --layer-elements 0 --no-sliver-removal --threads 2
 check "--layer-elements 0 exits 0" test "$rc" -eq 0
+check "--layer-elements 0: no thickness note" test -z "$(echo "$out" | grep 'note: thin layers')"
 n0="$(slab_triangles)"
 run "$tmp/slab.obj" --remesh-surfaces --size 25% --layer-elements 1 --no-sliver-removal --threads 2
 n1="$(slab_triangles)"
 run "$tmp/slab.obj" --remesh-surfaces --size 25% --no-sliver-removal --threads 2
 n2="$(slab_triangles)"
+check "thin slab: the note names the thickness rule's sizes" contains "$out" "note: thin layers or fault tips (thickness down to 0.1) make edges as short as 0.05 there, under the target size"
+check "thin slab: ... and --layer-elements" contains "$out" "--layer-elements (now 2)"
 echo "  slab re-meshed triangles with 0 / 1 / 2 (default) edges across: $n0 / $n1 / $n2"
 check "--layer-elements: finer with more edges across a thin layer" \
   test -n "$n0" -a -n "$n1" -a -n "$n2" -a "${n0:-0}" -lt "${n1:-0}" -a "${n1:-0}" -lt "${n2:-0}"

@@ -243,6 +243,14 @@ public:
   std::size_t number_of_point_sizes() const { return source_points_.size(); }
   /// smallest thickness found (infinite if none is under the patch sizes times N)
   double smallest_thickness() const { return smallest_thickness_; }
+  /// the size the thickness rule sets at the smallest thickness: that
+  /// thickness over `elements_across_thickness`, at least `minimum_edge_length`
+  /// (0 if no thickness binds)
+  double smallest_thickness_size() const
+  {
+    return std::isfinite(smallest_thickness_) && elements_across_ > 0.
+             ? (std::max)(minimum_size_, smallest_thickness_ / elements_across_) : 0.;
+  }
 
   /// bounds the field by `h` at `p` (and by the graded value around it)
   void add_size_constraint(const Point_3& p, double h)

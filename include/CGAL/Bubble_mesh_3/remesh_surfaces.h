@@ -59,6 +59,12 @@ struct Surface_remeshing_report
   std::size_t number_of_points = 0;           ///< points of the output
   std::size_t number_of_triangles = 0;        ///< triangles of the output
 
+  double target_size = 0.;                    ///< the size asked for: `edge_length` (or its default, the median input edge)
+  /// the thinnest layer, or smallest gap between a fault tip and a surface,
+  /// that the thickness rule found (infinite when none binds)
+  double smallest_thickness = std::numeric_limits<double>::infinity();
+  /// the size the thickness rule set there (`Remeshing_sizing_field::smallest_thickness_size()`; 0 when none binds)
+  double smallest_thickness_size = 0.;
   double angle_bound = 25.;                   ///< the `minimum_triangle_angle` aimed at
   double input_min_angle = 0.;                ///< smallest triangle angle of the input
   double min_angle = 0.;                      ///< smallest triangle angle of the output
@@ -960,6 +966,9 @@ Surface_remeshing_report remesh_surfaces(const Geological_model_3<GeomTraits>& i
 
   Remeshing_sizing_field<GeomTraits> sizing(input, features, np);
   report.time_sizing = timer.time() - report.time_features;
+  report.target_size = sizing.user_size();
+  report.smallest_thickness = sizing.smallest_thickness();
+  report.smallest_thickness_size = sizing.smallest_thickness_size();
   if(settings.verbose)
     std::cerr << "remesh_surfaces: " << features.corners.size() << " corners, " << features.curves.size()
               << " curves, size " << sizing.user_size() << ", " << sizing.number_of_point_sizes()
