@@ -36,7 +36,7 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, planar_angle_bound)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, refine_tilted_pieces)
 /// \ingroup PkgBubbleMesh3Ref
 /// how many times wider than the size wanted a triangle off the axis planes
-/// must be for `retriangulate_planar_patches()` to give it new points
+/// must be for `retriangulate_planar_patches()` to give it new points inside
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, tilted_size_factor)
 } // namespace parameters
 
@@ -108,7 +108,7 @@ The model must be valid (`validate_geological_model()`).
     \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{tilted_size_factor}
-    \cgalParamDescription{how many times wider than the size wanted a triangle off the axis planes must be to get new points}
+    \cgalParamDescription{how many times wider than the size wanted a triangle off the axis planes must be to get new points inside (an edge it shares with refined pieces may still be split, whatever the factor; `refine_tilted_pieces(false)` keeps those edges too)}
     \cgalParamType{`double`}
     \cgalParamDefault{2}
     \cgalParamExtra{at least 1}
