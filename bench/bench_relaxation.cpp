@@ -97,7 +97,7 @@ const char* usage =
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
   "            defaults), as bubble_mesh_3 does by default with the surfaces kept;\n"
   "            --planar-axis-only refines only the axis-plane pieces (refine_tilted_pieces(false));\n"
-  "            --tilted-size-factor F passes its tilted_size_factor (default 2).\n"
+  "            --tilted-size-factor F passes its tilted_size_factor (default 1.5).\n"
   "            --repulsive relaxes with Repulsive_bubble_force instead of the cubic law.\n"
   "            --by-wall also splits the interior bubbles by distance to the nearest\n"
   "            input triangle (in their radius) and, within 3 radii, by that triangle's\n"
@@ -460,7 +460,7 @@ int main(int argc, char** argv)
   std::vector<std::string> models;
   bool print_rounds = false, remesh = false, repulsive = false, by_wall = false;
   int planar = 0; // 1: retriangulate_planar_patches() defaults, 2: axis planes only
-  double tilted_factor = 2.; // its tilted_size_factor
+  double tilted_factor = BM::default_tilted_size_factor; // its tilted_size_factor
   for(int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];

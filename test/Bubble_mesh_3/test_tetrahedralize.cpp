@@ -499,6 +499,41 @@ void test_pinch_out()
   mesh_and_check("pinch-out at 5.7 degrees", m, jittered_lattice(BM::bbox(m), 0.1, 4), c3t3);
 }
 
+// One wide triangle as a fault, with interior points a thousandth of its
+// size off it on both sides (as bubbles come beside a kilometre-wide fault
+// triangle whose diametral ball is too big to be kept free): the recovery
+// must refine it until its sub-facets are about that small, while the count
+// of missing ones stays flat for hundreds of insertions (modelA2 with
+// tilted_size_factor 1.5 failed so before this was counted as progress).
+void test_wide_triangle_with_close_points()
+{
+  Model m = two_layers(6);
+  Builder b(m);
+  for(std::size_t i = 0; i < m.number_of_points(); ++i)
+    b.index.emplace(std::array<double, 3>{{m.point(i).x(), m.point(i).y(), m.point(i).z()}}, i);
+  const Point_3 A(0.1, 0.12, 0.08), B(0.9, 0.2, 0.2), C(0.35, 0.88, 0.42);
+  const std::size_t fault = m.add_patch("wide fault", 1, 1);
+  m.add_triangle(b.point(A.x(), A.y(), A.z()), b.point(B.x(), B.y(), B.z()), b.point(C.x(), C.y(), C.z()), fault);
+  const Vector_3 n = CGAL::cross_product(B - A, C - A) / std::sqrt(CGAL::cross_product(B - A, C - A).squared_length());
+  std::vector<Point_3> interior = jittered_lattice(BM::bbox(m), 0.125, 9);
+  CGAL::Random rng(11);
+  std::size_t close = 0;
+  for(int k = 0; k < 400; ++k)
+  {
+    double u = rng.get_double(0.02, 0.96), v = rng.get_double(0.02, 0.96);
+    if(u + v > 0.98) { u = 1. - u; v = 1. - v; }
+    const double side = (k % 2) ? 1. : -1.;
+    interior.push_back(A + u * (B - A) + v * (C - A) + side * rng.get_double(0.5e-3, 2e-3) * n);
+    ++close;
+  }
+  C3T3 c3t3;
+  const Report r = BM::tetrahedralize_bubbles(m, interior, c3t3, BM::parameters::drop_encroaching_points(false));
+  check_mesh("a wide fault triangle with points close to it", m, c3t3, r);
+  assert(r.number_of_steiner_points_on_triangles > 256);
+  std::cout << "  " << close << " points 0.5e-3 to 2e-3 off the fault: " << r.number_of_steiner_points_on_triangles
+            << " Steiner points on triangles" << std::endl;
+}
+
 void test_fault_at_small_angle()
 {
   // a fault inside the upper layer that starts on a line of the horizon's
@@ -873,16 +908,22 @@ void test_tilted_refinement()
 
   // tilted_size_factor sets how much wider than the size wanted a triangle
   // may stay: smaller, the fault gets more points; huge, none
-  Model finer, unrefined;
+  Model coarser, finer, unrefined;
+  const BM::Planar_retriangulation_report r_coarser =
+    BM::retriangulate_planar_patches(m, coarser, BM::parameters::tilted_size_factor(2.));
   const BM::Planar_retriangulation_report r_finer =
     BM::retriangulate_planar_patches(m, finer, BM::parameters::tilted_size_factor(1.25));
+  BM::validate_geological_model(coarser);
   BM::validate_geological_model(finer);
+  assert_same_surface(m, coarser, fault);
   assert_same_surface(m, finer, fault);
   std::cout << "  tilted_size_factor 1.25: " << r_finer.number_of_points_added << " new points (2: "
-            << r.number_of_points_added << "), longest fault edge " << longest_patch_edge(finer, fault) << std::endl;
-  assert(r_finer.number_of_points_added > r.number_of_points_added);
-  assert(patch_surface(finer, fault).triangles.size() > after.triangles.size());
-  assert(longest_patch_edge(finer, fault) <= longest_after);
+            << r_coarser.number_of_points_added << ", default " << BM::default_tilted_size_factor << ": "
+            << r.number_of_points_added << "), longest fault edge " << longest_patch_edge(finer, fault) << " (2: "
+            << longest_patch_edge(coarser, fault) << ")" << std::endl;
+  assert(r_finer.number_of_points_added > r_coarser.number_of_points_added);
+  assert(patch_surface(finer, fault).triangles.size() > patch_surface(coarser, fault).triangles.size());
+  assert(longest_patch_edge(finer, fault) <= longest_patch_edge(coarser, fault));
   BM::retriangulate_planar_patches(m, unrefined, BM::parameters::tilted_size_factor(100.));
   assert(patch_surface(m, fault).triangles == patch_surface(unrefined, fault).triangles);
 
@@ -1114,6 +1155,7 @@ int main(int argc, char** argv)
   test_thin_layer();
   test_pinch_out();
   test_fault_at_small_angle();
+  test_wide_triangle_with_close_points();
   test_tilted_grid_box();
   test_planar_retriangulation();
   test_planar_refinement();

@@ -40,6 +40,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, refine_tilted_pieces)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, tilted_size_factor)
 } // namespace parameters
 
+/// \ingroup PkgBubbleMesh3Ref
+/// default of the named parameter `tilted_size_factor`
+constexpr double default_tilted_size_factor = 1.5;
+
 /*!
 \ingroup PkgBubbleMesh3Ref
 
@@ -70,11 +74,12 @@ piece covers the same polygon as before.
 - Every other piece, and every single triangle of a curved surface whose
   angles are all at least 20 degrees, when `refine_tilted_pieces` is true
   (the default) and `planar_angle_bound` is positive, is refined for size
-  alone, where a triangle is more than `tilted_size_factor` (default 2)
+  alone, where a triangle is more than `tilted_size_factor` (default 1.5)
   times as wide as the size above: a huge triangle of a curved horizon or
-  fault is as bare a wall as a flat one (twice: the input's own triangles
-  near the median edge stay; 1.5 gave CloudSpin and modelA5 better meshes,
-  but modelA2's surface recovery failed, bench/README.md). Its new points are
+  fault is as bare a wall as a flat one (1.5 rather than 2: CloudSpin and
+  modelA2 get far better meshes for 35 and 120 % more tetrahedra, and the
+  input's own triangles near the median edge still stay; bench/README.md,
+  session 34). Its new points are
   rounded onto its plane (within the coplanarity tolerance above); an edge
   whose triangles are all refined is split at its midpoint where a
   circumcentre comes too close to it, in every triangle on it, so the
@@ -110,7 +115,7 @@ The model must be valid (`validate_geological_model()`).
   \cgalParamNBegin{tilted_size_factor}
     \cgalParamDescription{how many times wider than the size wanted a triangle off the axis planes must be to get new points inside (an edge it shares with refined pieces may still be split, whatever the factor; `refine_tilted_pieces(false)` keeps those edges too)}
     \cgalParamType{`double`}
-    \cgalParamDefault{2}
+    \cgalParamDefault{`default_tilted_size_factor` (1.5)}
     \cgalParamExtra{at least 1}
   \cgalParamNEnd
 \cgalNamedParamsEnd
@@ -124,7 +129,7 @@ Planar_retriangulation_report retriangulate_planar_patches(const Geological_mode
   using CGAL::parameters::get_parameter;
   const double bound = choose_parameter(get_parameter(np, internal_np::planar_angle_bound), 10.);
   const bool tilted = choose_parameter(get_parameter(np, internal_np::refine_tilted_pieces), true);
-  const double factor = choose_parameter(get_parameter(np, internal_np::tilted_size_factor), 2.);
+  const double factor = choose_parameter(get_parameter(np, internal_np::tilted_size_factor), default_tilted_size_factor);
   CGAL_precondition_msg(factor >= 1., "tilted_size_factor must be at least 1");
   internal::Planar_pieces<GeomTraits> pieces(input, bound, tilted, factor);
   return pieces.run(output);

@@ -123,8 +123,8 @@ class Planar_pieces
 
   static constexpr std::size_t none = std::size_t(-1);
 
-  // Off the axis planes a triangle is refined only when it is twice (by
-  // default: `tilted_size_factor`) as wide as the size wanted there (the
+  // Off the axis planes a triangle is refined only when it is
+  // `tilted_size_factor` (default 1.5) times as wide as the size wanted there (the
   // input's own triangles near the median edge stay; with a factor 1,
   // modelA2 got three times the bubbles), and a
   // single triangle only when its angles are at least 20 degrees: splitting
@@ -136,7 +136,7 @@ public:
   // `refine_tilted`: whether pieces off the axis planes (and single
   // triangles of curved surfaces) get points for size too, where a triangle
   // is `tilted_size_factor` times as wide as the size wanted
-  Planar_pieces(const Model& input, double angle_bound, bool refine_tilted, double tilted_size_factor = 2.)
+  Planar_pieces(const Model& input, double angle_bound, bool refine_tilted, double tilted_size_factor)
     : in_(input), np_(input.number_of_points()), nt_(input.number_of_triangles()),
       sin_bound_(std::sin((std::min)(angle_bound, 34.) * CGAL_PI / 180.)), refine_(angle_bound > 0.),
       refine_tilted_(refine_tilted), tilted_size_factor_(tilted_size_factor),

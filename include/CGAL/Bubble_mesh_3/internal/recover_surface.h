@@ -1082,11 +1082,24 @@ private:
     int fold_splits = 0;
     // Rounded Steiner points can keep a triangle from ever being recovered (on a
     // wall off the axis planes, each new point may bring new flat cells): past
-    // this many insertions without a new low in its missing sub-facets, it is
-    // named in an error rather than refined without end. On the real models a
-    // triangle gets at most a few dozen points in all.
+    // this many insertions (and four per sub-facet missing then: the largest
+    // one halves once the others of its size are split) with neither fewer missing
+    // sub-facets nor a largest one half as wide, it is named in an error
+    // rather than refined without end. Smaller counts as progress because of
+    // bubbles: beside a triangle too wide for its diametral ball to be kept
+    // free of them (confine_to_region.h), bubbles tens of metres off a
+    // kilometre-wide triangle encroach upon its sub-facets until those are
+    // about that small, and meanwhile the count of missing ones grows or stays
+    // flat (modelA2 with tilted_size_factor 1.5). Only sub-facets that are no
+    // facet of the triangulation count there: those hidden by flat cells of
+    // rounded points (a tilted outer wall of CloudSpin turned) shrink without
+    // end as well (28 m -> 2 mm in 250 insertions).
     const std::size_t maximum_stalled_insertions = 256;
     std::size_t fewest_missing = (std::numeric_limits<std::size_t>::max)(), stalled = 0;
+    double largest_missing_r2_then = (std::numeric_limits<double>::max)(); // when progress was last made
+    std::size_t missing_then = 0;                                          // idem
+    const double smallest_progress_r2 = (std::max)(options_.minimum_split_length * options_.minimum_split_length,
+                                                   1e-12 * CGAL::to_double(ab.squared_length()));
     for(;;)
     {
       triangle_dirty_[t] = 0;
@@ -1142,7 +1155,7 @@ private:
       }
       std::sort(present_keys.begin(), present_keys.end());
       typename CDT::Face_handle worst;
-      double worst_r2 = -1.;
+      double worst_r2 = -1., largest_missing_r2 = 0.;
       int worst_rank = 2;
       std::size_t missing = 0;
       for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
@@ -1160,6 +1173,7 @@ private:
           tr_.is_facet(records_[ids[0]].vh, records_[ids[1]].vh, records_[ids[2]].vh, c, i0, i1, i2) ? 1 : 0;
         const double r2 = CGAL::to_double(CGAL::squared_radius(f->vertex(0)->point(), f->vertex(1)->point(),
                                                                 f->vertex(2)->point()));
+        if(rank == 0) largest_missing_r2 = (std::max)(largest_missing_r2, r2);
         if(rank < worst_rank || (rank == worst_rank && r2 > worst_r2))
         {
           worst_rank = rank;
@@ -1167,12 +1181,19 @@ private:
           worst = f;
         }
       }
-      if(missing < fewest_missing) { fewest_missing = missing; stalled = 0; }
-      else if(++stalled > maximum_stalled_insertions)
+      if(missing < fewest_missing ||
+         (largest_missing_r2 < 0.25 * largest_missing_r2_then && largest_missing_r2 > smallest_progress_r2))
+      {
+        fewest_missing = (std::min)(fewest_missing, missing);
+        largest_missing_r2_then = largest_missing_r2 > 0. ? largest_missing_r2 : (std::numeric_limits<double>::max)();
+        missing_then = missing;
+        stalled = 0;
+      }
+      else if(++stalled > maximum_stalled_insertions + 4 * missing_then)
         throw Tetrahedralization_error("cannot recover " + context + ": " + std::to_string(triangle_points_[t].size()) +
                                        " Steiner points on it and still " + std::to_string(missing) +
-                                       " sub-facets missing, no fewer for " +
-                                       std::to_string(maximum_stalled_insertions) +
+                                       " sub-facets missing, no fewer and none half as wide for " +
+                                       std::to_string(stalled) +
                                        " insertions (numerical limit: its points are rounded off its plane)");
       if(worst == typename CDT::Face_handle())
       {
