@@ -558,7 +558,8 @@ int main(int argc, char** argv)
       else if(report.tilted_refinement_coarsened)
         std::cout << "note: the surface recovery failed with --tilted-size-factor " << opt.tilted_size_factor
                   << ": " << report.tilted_refinement_undone_because
-                  << "; the mesh was made again with --tilted-size-factor 2 (giving it skips the failed attempt)\n";
+                  << "; the mesh was made again with --tilted-size-factor " << BM::fallback_tilted_size_factor
+                  << " (giving it skips the failed attempt)\n";
     }
     // sliver removal may add interior vertices: count them too, so that the total is the mesh's
     std::cout << "mesh: " << c3t3.number_of_cells_in_complex() << " tetrahedra, " << quality.all.number_of_vertices

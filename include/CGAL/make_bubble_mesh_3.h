@@ -40,7 +40,7 @@ struct Bubble_mesh_report
   Surface_remeshing_report surface_remeshing; ///< stage 0 (`remesh_surfaces()`), if it ran
   bool planar_patches_retriangulated = false; ///< whether planar pieces were re-triangulated (`retriangulate_planar_patches()`)
   Planar_retriangulation_report planar_retriangulation; ///< if they were
-  bool tilted_refinement_coarsened = false;   ///< whether the mesh was made again with `tilted_size_factor(2)` after the surface recovery failed with the smaller factor asked for (or the default)
+  bool tilted_refinement_coarsened = false;   ///< whether the mesh was made again with `fallback_tilted_size_factor` (2) after the surface recovery failed with the smaller factor asked for (or the default)
   bool tilted_refinement_undone = false;      ///< whether the mesh was made again without new points on tilted pieces (`refine_tilted_pieces(false)`) after the surface recovery failed with them
   std::string tilted_refinement_undone_because; ///< when either is true, the surface recovery's errors (which input triangle it could not recover, and why), one per line
   std::size_t number_of_surface_bubbles = 0;  ///< one per model point
@@ -233,14 +233,13 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     // A smaller factor refines more pieces, each one more chance of a point
     // the recovery cannot handle: twice the size wanted comes next (the
     // default until every model in ../shared recovered at 1.5).
-    const double coarser_factor = 2.;
     bool made = false;
     if(choose_parameter(get_parameter(np, internal_np::tilted_size_factor), default_tilted_size_factor) <
-       coarser_factor)
+       fallback_tilted_size_factor)
     {
       report->tilted_refinement_coarsened = true;
       report->planar_retriangulation = retriangulate_planar_patches(
-        input_model, retriangulated, parameters::tilted_size_factor(coarser_factor, np));
+        input_model, retriangulated, parameters::tilted_size_factor(fallback_tilted_size_factor, np));
       if(report->planar_retriangulation.number_of_refined_tilted_pieces > 0)
       {
         try { stages_1_to_5(retriangulated); made = true; }

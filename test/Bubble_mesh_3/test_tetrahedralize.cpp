@@ -517,14 +517,13 @@ void test_wide_triangle_with_close_points()
   const Vector_3 n = CGAL::cross_product(B - A, C - A) / std::sqrt(CGAL::cross_product(B - A, C - A).squared_length());
   std::vector<Point_3> interior = jittered_lattice(BM::bbox(m), 0.125, 9);
   CGAL::Random rng(11);
-  std::size_t close = 0;
-  for(int k = 0; k < 400; ++k)
+  const int close = 400;
+  for(int k = 0; k < close; ++k)
   {
     double u = rng.get_double(0.02, 0.96), v = rng.get_double(0.02, 0.96);
     if(u + v > 0.98) { u = 1. - u; v = 1. - v; }
     const double side = (k % 2) ? 1. : -1.;
     interior.push_back(A + u * (B - A) + v * (C - A) + side * rng.get_double(0.5e-3, 2e-3) * n);
-    ++close;
   }
   C3T3 c3t3;
   const Report r = BM::tetrahedralize_bubbles(m, interior, c3t3, BM::parameters::drop_encroaching_points(false));

@@ -44,6 +44,11 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, tilted_size_factor)
 /// default of the named parameter `tilted_size_factor`
 constexpr double default_tilted_size_factor = 1.5;
 
+/// \ingroup PkgBubbleMesh3Ref
+/// the factor `make_bubble_mesh_3()` meshes again with when the surface
+/// recovery fails with a smaller `tilted_size_factor`
+constexpr double fallback_tilted_size_factor = 2.;
+
 /*!
 \ingroup PkgBubbleMesh3Ref
 
