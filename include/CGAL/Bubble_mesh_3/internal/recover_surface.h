@@ -1198,8 +1198,8 @@ private:
         throw Tetrahedralization_error("cannot recover " + context + ": " + std::to_string(triangle_points_[t].size()) +
                                        " Steiner points on it and still " + std::to_string(missing) +
                                        " sub-facets missing, no fewer and none half as wide for " +
-                                       std::to_string(stalled) +
-                                       " insertions (numerical limit: its points are rounded off its plane)");
+                                       std::to_string(stalled) + " insertions (" +
+                                       stall_cause(t, worst, worst_rank, A, e1, e2, n) + ")");
       if(worst == typename CDT::Face_handle())
       {
         // the sub-facets are there but fold over each other: split its longest
@@ -1362,8 +1362,37 @@ private:
     switch(r.kind)
     {
     case Vertex_kind::input_point: return "model point " + std::to_string(r.element);
+    case Vertex_kind::edge_point: return "a Steiner point on " + describe_edge(r.element);
+    case Vertex_kind::triangle_point: return "a Steiner point on " + describe_triangle(r.element);
     default: return "interior point " + std::to_string(r.element);
     }
+  }
+
+  // Why the recovery of triangle t stalls, for its error. When the largest
+  // missing sub-facet is no facet of the triangulation at all, a point off the
+  // triangle lies in its diametral ball, too close to the plane for the
+  // refinement to pass (bubbles beside a wide triangle, another surface
+  // almost touching it): name the one nearest to its circumcentre. Otherwise
+  // the sub-facets are facets that flat cells hide: rounding.
+  template <class Face_handle>
+  std::string stall_cause(std::size_t t, Face_handle worst, int worst_rank, const Point_3& A, const Vector_3& e1,
+                          const Vector_3& e2, const Vector_3& normal) const
+  {
+    const std::string rounding = "numerical limit: its points are rounded off its plane";
+    if(worst == Face_handle() || worst_rank != 0) return rounding;
+    const Point_2 c2 = CGAL::circumcenter(worst->vertex(0)->point(), worst->vertex(1)->point(),
+                                          worst->vertex(2)->point());
+    const Point_3 c3 = A + CGAL::to_double(c2.x()) * e1 + CGAL::to_double(c2.y()) * e2;
+    const Vertex_handle v = tr_.nearest_power_vertex(c3, records_[worst->vertex(0)->info()].vh->cell());
+    if(tr_.is_infinite(v)) return rounding;
+    const std::size_t id = id_of(v);
+    if(is_on_triangle(id, t)) return rounding;
+    const double off = std::abs(CGAL::to_double((point(id) - A) * normal)) /
+                       std::sqrt(CGAL::to_double(normal.squared_length()));
+    std::ostringstream os;
+    os << "points off it stay inside its sub-facets' diametral balls; nearest to the largest missing one: "
+       << describe_point_kind(id) << " at " << to_string(point(id)) << ", " << off << " off its plane";
+    return os.str();
   }
 
   const Model& model_;
