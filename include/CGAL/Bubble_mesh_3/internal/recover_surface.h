@@ -1061,6 +1061,11 @@ private:
     const Vector_3 e1 = ab / std::sqrt(CGAL::to_double(ab.squared_length()));
     Vector_3 e2 = CGAL::cross_product(n, e1);
     e2 = e2 / std::sqrt(CGAL::to_double(e2.squared_length()));
+    // the circumcentre of a face of the triangle's 2D triangulation, in 3D
+    auto circumcentre_3d = [&](const auto& f) {
+      const Point_2 c = CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+      return std::make_pair(c, Point_3(A + CGAL::to_double(c.x()) * e1 + CGAL::to_double(c.y()) * e2));
+    };
     auto to_2d = [&](const Point_3& p) {
       const Vector_3 d = p - A;
       return Point_2(d * e1, d * e2);
@@ -1195,11 +1200,16 @@ private:
         stalled = 0;
       }
       else if(++stalled > maximum_stalled_insertions + 4 * missing_then)
+      {
+        // rank 0: the largest missing sub-facet is no facet at all, so a point
+        // blocks it; otherwise flat cells of rounded points hide them
+        std::string why = worst_rank == 0 ? blocking_point(t, circumcentre_3d(worst).second, A, n) : std::string();
+        if(why.empty()) why = "numerical limit: its points are rounded off its plane";
         throw Tetrahedralization_error("cannot recover " + context + ": " + std::to_string(triangle_points_[t].size()) +
                                        " Steiner points on it and still " + std::to_string(missing) +
                                        " sub-facets missing, no fewer and none half as wide for " +
-                                       std::to_string(stalled) + " insertions (" +
-                                       stall_cause(t, worst, worst_rank, A, e1, e2, n) + ")");
+                                       std::to_string(stalled) + " insertions (" + why + ")");
+      }
       if(worst == typename CDT::Face_handle())
       {
         // the sub-facets are there but fold over each other: split its longest
@@ -1225,9 +1235,9 @@ private:
         continue;
       }
 
-      const Point_2 c2 = CGAL::circumcenter(worst->vertex(0)->point(), worst->vertex(1)->point(),
-                                            worst->vertex(2)->point());
-      Point_3 c3 = A + CGAL::to_double(c2.x()) * e1 + CGAL::to_double(c2.y()) * e2;
+      const std::pair<Point_2, Point_3> centre = circumcentre_3d(worst);
+      const Point_2& c2 = centre.first;
+      Point_3 c3 = centre.second;
       // on a triangle of an axis plane (the walls of most models) the point
       // is put exactly on the plane: rounded off it, points make flat cells
       {
@@ -1368,25 +1378,18 @@ private:
     }
   }
 
-  // Why the recovery of triangle t stalls, for its error. When the largest
-  // missing sub-facet is no facet of the triangulation at all, a point off the
-  // triangle lies in its diametral ball, too close to the plane for the
-  // refinement to pass (bubbles beside a wide triangle, another surface
-  // almost touching it): name the one nearest to its circumcentre. Otherwise
-  // the sub-facets are facets that flat cells hide: rounding.
-  template <class Face_handle>
-  std::string stall_cause(std::size_t t, Face_handle worst, int worst_rank, const Point_3& A, const Vector_3& e1,
-                          const Vector_3& e2, const Vector_3& normal) const
+  // Why the recovery of triangle t stalls when its largest missing sub-facet,
+  // of circumcentre c, is no facet of the triangulation at all: every sphere
+  // through its circle holds a point, the diametral one too, so a point off
+  // the triangle lies nearer to c than the sub-facet's own vertices (bubbles
+  // beside a wide triangle, another surface almost touching it). Names it,
+  // with its distance off the plane (through A, normal `normal`); empty if the
+  // nearest point is on the triangle after all (rounding).
+  std::string blocking_point(std::size_t t, const Point_3& c, const Point_3& A, const Vector_3& normal) const
   {
-    const std::string rounding = "numerical limit: its points are rounded off its plane";
-    if(worst == Face_handle() || worst_rank != 0) return rounding;
-    const Point_2 c2 = CGAL::circumcenter(worst->vertex(0)->point(), worst->vertex(1)->point(),
-                                          worst->vertex(2)->point());
-    const Point_3 c3 = A + CGAL::to_double(c2.x()) * e1 + CGAL::to_double(c2.y()) * e2;
-    const Vertex_handle v = tr_.nearest_power_vertex(c3, records_[worst->vertex(0)->info()].vh->cell());
-    if(tr_.is_infinite(v)) return rounding;
-    const std::size_t id = id_of(v);
-    if(is_on_triangle(id, t)) return rounding;
+    const Vertex_handle v = tr_.nearest_power_vertex(c);
+    const std::size_t id = tr_.is_infinite(v) ? no_index_ : id_of(v);
+    if(id == no_index_ || is_on_triangle(id, t)) return std::string();
     const double off = std::abs(CGAL::to_double((point(id) - A) * normal)) /
                        std::sqrt(CGAL::to_double(normal.squared_length()));
     std::ostringstream os;
