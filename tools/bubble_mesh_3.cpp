@@ -101,8 +101,8 @@ const char* usage_text =
 "                             re-triangulated (Delaunay, same polygon)\n"
 "  --planar-angle-bound D     planar pieces in an axis plane (x, y or z constant) get\n"
 "                             new points until their triangles' angles reach D degrees\n"
-"                             and their edges the median input edge (finer next to\n"
-"                             finer points on their border) where other surfaces allow\n"
+"                             and their edges the median input edge or --size (finer next\n"
+"                             to finer points on their border) where other surfaces allow\n"
 "                             (default 10; 0: re-triangulate with the input points only);\n"
 "                             other pieces and curved surfaces' triangles with no angle\n"
 "                             under 20 degrees get new points where over 1.5 times as wide\n"
@@ -115,9 +115,13 @@ const char* usage_text =
 "                             degrees). If the surface recovery fails, the mesh is made\n"
 "                             again at 2, then with the axis planes only\n"
 "  --size S                   target edge length of the re-meshed surfaces (with\n"
-"                             --remesh-surfaces): in model units, or with a % sign, of\n"
-"                             the bounding-box diagonal (e.g. 2%); default: the median\n"
-"                             input edge length. Thin layers get finer (see below)\n"
+"                             --remesh-surfaces), or else the largest edge of the new\n"
+"                             points on planar pieces: in model units, or with a % sign,\n"
+"                             of the bounding-box diagonal (e.g. 2%); default: the median\n"
+"                             input edge length. Thin layers get finer (see below). With\n"
+"                             the surfaces kept, a size above the median keeps the box\n"
+"                             walls coarse where a small, finely triangulated body (an\n"
+"                             ore lens, a tunnel) makes the median small\n"
 "  --layer-elements N         with --remesh-surfaces: edges wanted across the thickness\n"
 "                             of a thin layer, or between a fault tip and a horizon\n"
 "                             (default 2; 1 halves the sizes there, fewer tetrahedra and\n"
@@ -303,8 +307,9 @@ Options parse_options(int argc, char** argv)
   if(!o.regions.empty() && !is_tsurf_file(o.input))
     usage_error("--regions assigns regions to the objects of a GOCAD TSurf (.ts) file, and '" + o.input +
                 "' is not one (a .ml file lists its regions itself; an .obj file has one body per group)");
-  if((o.size > 0. || o.relative_size > 0.) && !o.remesh_surfaces)
-    usage_error("--size is the target of --remesh-surfaces: give both");
+  if((o.size > 0. || o.relative_size > 0.) && !o.remesh_surfaces && (o.keep_input_triangles || !(o.planar_angle_bound > 0.)))
+    usage_error("--size sets the size of the re-meshed surfaces, or of the new points on planar pieces: it does "
+                "nothing with " + std::string(o.keep_input_triangles ? "--keep-input-triangles" : "--planar-angle-bound 0"));
   if(o.layer_elements_given && !o.remesh_surfaces)
     usage_error("--layer-elements is a rule of --remesh-surfaces: give both");
   if(o.size_grading_given && !o.remesh_surfaces)
@@ -549,6 +554,15 @@ int main(int argc, char** argv)
     if(report.planar_patches_retriangulated)
     {
       std::cout << std::setprecision(4) << "planar pieces: " << pr << "\n" << std::defaultfloat;
+      // walls refined to a median set by a small fine body make the whole box that fine
+      // (the real models of ../shared get at most 2.9 times their points)
+      if(!(opt.size > 0. || opt.relative_size > 0.) && pr.number_of_points_added > 5 * model.number_of_points())
+        std::cout << std::setprecision(4) << "note: the planar pieces got " << pr.number_of_points_added
+                  << " new points, over five times the input's " << model.number_of_points()
+                  << ", with edges up to the median input edge " << summary.median_edge_length
+                  << ", and the volume beside them is meshed as finely; where a small, finely triangulated body "
+                     "(an ore lens, a tunnel) makes that median small, --size S above it keeps them coarser\n"
+                  << std::defaultfloat;
       if(report.tilted_refinement_undone)
         std::cout << "note: the surface recovery failed with new points on tilted pieces (curved surfaces' "
                      "triangles): "

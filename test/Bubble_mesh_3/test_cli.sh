@@ -47,6 +47,69 @@ run "$tmp/needle.obj" --check
 check "needle body --check exits 0" test "$rc" -eq 0
 check "poor input angles point to --remesh-surfaces" contains "$out" "try --remesh-surfaces"
 
+# a unit box of 12 triangles around a small sphere of 32 (an ore lens): the
+# sphere's edge is the median input edge, and the box walls refined to it by
+# default make the whole box that fine; the program says so, and --size caps
+# the walls' edges (the surfaces kept)
+python3 - "$tmp/lens.obj" 1 <<'PY'
+import sys, math
+# a unit box of 12 triangles holding a small sphere of 128 triangles: the sphere's edge is the model's median
+V=[]; idx={}
+def v(p):
+    k=tuple(round(c, 12) for c in p)
+    if k not in idx: idx[k]=len(V)+1; V.append(k)
+    return idx[k]
+def oriented(a, b, c, n):
+    pa, pb, pc = V[a-1], V[b-1], V[c-1]
+    u=[pb[i]-pa[i] for i in range(3)]; w=[pc[i]-pa[i] for i in range(3)]
+    cr=[u[1]*w[2]-u[2]*w[1], u[2]*w[0]-u[0]*w[2], u[0]*w[1]-u[1]*w[0]]
+    return (a, b, c) if sum(cr[i]*n[i] for i in range(3)) > 0 else (a, c, b)
+box=[]
+for ax in range(3):
+    for side in (0, 1):
+        u, w = (ax+1) % 3, (ax+2) % 3
+        q=[]
+        for k in range(4):
+            c=[0, 0, 0]; c[ax]=side; c[u]=1 if k in (1, 2) else 0; c[w]=1 if k >= 2 else 0
+            q.append(v(c))
+        n=[0, 0, 0]; n[ax]=2*side-1
+        box += [oriented(q[0], q[1], q[2], n), oriented(q[0], q[2], q[3], n)]
+def unit(a): l=math.sqrt(sum(x*x for x in a)); return tuple(x/l for x in a)
+e=[(1,0,0),(-1,0,0),(0,1,0),(0,-1,0),(0,0,1),(0,0,-1)]
+F=[(e[i], e[j], e[k]) for i in range(2) for j in range(2, 4) for k in range(4, 6)]
+for level in range(int(sys.argv[2]) if len(sys.argv) > 2 else 2):
+    G=[]
+    for a, b, c in F:
+        ab, bc, ca = unit([a[i]+b[i] for i in range(3)]), unit([b[i]+c[i] for i in range(3)]), unit([c[i]+a[i] for i in range(3)])
+        G += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+    F=G
+sphere=[]
+for f in F:
+    t=[v((0.3+0.1*p[0], 0.5+0.1*p[1], 0.5+0.1*p[2])) for p in f]
+    sphere.append(oriented(t[0], t[1], t[2], [f[0][i]+f[1][i]+f[2][i] for i in range(3)]))
+with open(sys.argv[1], 'w') as o:
+    for p in V: o.write('v %r %r %r\n' % p)
+    o.write('o host\n')
+    for f in box: o.write('f %d %d %d\n' % f)
+    for f in sphere: o.write('f %d %d %d\n' % (f[0], f[2], f[1]))
+    o.write('o lens\n')
+    for f in sphere: o.write('f %d %d %d\n' % f)
+PY
+run "$tmp/lens.obj" --no-sliver-removal --threads 2 -o "$tmp/lens_median.mesh"
+check "fine body in a coarse box meshes" test "$rc" -eq 0
+check "walls refined to a small median: the note names --size" contains "$out" "--size S above it keeps them coarser"
+tets_median="$(sed -n 's/^mesh: \([0-9]*\) tetrahedra.*/\1/p' <<<"$out")"
+run "$tmp/lens.obj" --size 0.3 --no-sliver-removal --threads 2 -o "$tmp/lens_size.mesh"
+check "--size with the surfaces kept meshes" test "$rc" -eq 0
+tets_size="$(sed -n 's/^mesh: \([0-9]*\) tetrahedra.*/\1/p' <<<"$out")"
+check "--size above the median: no note, a coarser box ($tets_size against $tets_median tetrahedra)" \
+  test -n "$tets_size" -a -n "$tets_median" -a "$((tets_size * 4))" -lt "${tets_median:-0}"
+check "--size: no note when given" test "$(grep -c 'keeps them coarser' <<<"$out")" -eq 0
+run "$tmp/lens.obj" --size 0.3 --keep-input-triangles -o "$tmp/lens_kept.mesh"
+check "--size with --keep-input-triangles exits 2" test "$rc" -eq 2
+check "--size with --keep-input-triangles says why" contains "$err" "it does nothing with --keep-input-triangles"
+check "no output after a usage error" test ! -e "$tmp/lens_kept.mesh"
+
 # a GOCAD box of two layers whose contact is listed with the layers on the wrong sides (its
 # triangles face the upper layer, the file puts the lower one there): mended from the geometry
 python3 - "$tmp/split.ml" <<'PY'
@@ -320,9 +383,9 @@ p=json.load(open('$tmp/qp.json'))['all']; k=json.load(open('$tmp/qk.json'))['all
 print('  smallest dihedral', k['dihedral_angle']['min'], '->', p['dihedral_angle']['min'], ', volume', k['volume'], p['volume'])
 sys.exit(0 if p['dihedral_angle']['min'] > k['dihedral_angle']['min'] and abs(p['volume'] - 1) < 1e-12 and abs(k['volume'] - 1) < 1e-12 else 1)"
 
-run "$model" --size 2%
-check "--size without --remesh-surfaces exits 2" test "$rc" -eq 2
-check "--size without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
+run "$model" --size 2% --planar-angle-bound 0 -o "$tmp/size_unused.mesh"
+check "--size with no new points on planar pieces exits 2" test "$rc" -eq 2
+check "--size with no new points on planar pieces says why" contains "$err" "it does nothing with --planar-angle-bound 0"
 run "$model" --remesh-surfaces --size 0
 check "--size 0 exits 2" test "$rc" -eq 2
 run "$model" --remesh-surfaces --size abc%

@@ -931,6 +931,112 @@ void test_tilted_refinement()
   mesh_and_check("thin box with a coarse curved fault, its triangles refined", g, inside, c3t3);
 }
 
+// A small body of 512 fine triangles (an ore lens, say) inside a box of 12:
+// the body holds nearly all the model's edges, so its edge is the model's
+// median, and the box's walls refined to it by default would make the whole
+// box that fine. `edge_length` caps the walls' edges instead. Each wall is a
+// rectangle of two right triangles, whose circumcentres lie on the diagonal
+// between them: those must be inserted too, not given up.
+void test_fine_body_in_coarse_box()
+{
+  Model m;
+  Builder b(m);
+  m.add_region("host");
+  m.add_region("lens");
+  const std::size_t box = m.add_patch("box", 0, 1), lens = m.add_patch("lens", 1, 2);
+  const double X = 4., Y = 2., Z = 1.;
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side)
+    {
+      // the face's corners, in order around it
+      std::array<std::array<double, 3>, 4> c;
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      const double size[3] = {X, Y, Z};
+      for(int k = 0; k < 4; ++k)
+      {
+        c[k][axis] = side * size[axis];
+        c[k][u] = (k == 1 || k == 2) ? size[u] : 0.;
+        c[k][v] = (k >= 2) ? size[v] : 0.;
+      }
+      const double o = 2. * side - 1.;
+      const Vector_3 out(axis == 0 ? o : 0., axis == 1 ? o : 0., axis == 2 ? o : 0.);
+      std::array<std::size_t, 4> q;
+      for(int k = 0; k < 4; ++k) q[k] = b.point(c[k][0], c[k][1], c[k][2]);
+      b.triangle(q[0], q[1], q[2], box, out);
+      b.triangle(q[0], q[2], q[3], box, out);
+    }
+  // a sphere of radius 0.1 at (0.5, 1, 0.5): an octahedron subdivided three times
+  const Point_3 centre(0.5, 1., 0.5);
+  const double radius = 0.1;
+  std::vector<std::array<Vector_3, 3> > faces;
+  const Vector_3 e[6] = {Vector_3(1, 0, 0), Vector_3(-1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, -1, 0),
+                         Vector_3(0, 0, 1), Vector_3(0, 0, -1)};
+  for(int i = 0; i < 2; ++i)
+    for(int j = 2; j < 4; ++j)
+      for(int k = 4; k < 6; ++k) faces.push_back({{e[i], e[j], e[k]}});
+  auto unit = [](const Vector_3& w) { return w / std::sqrt(w.squared_length()); };
+  for(int level = 0; level < 3; ++level)
+  {
+    std::vector<std::array<Vector_3, 3> > finer;
+    for(const auto& f : faces)
+    {
+      const Vector_3 ab = unit(f[0] + f[1]), bc = unit(f[1] + f[2]), ca = unit(f[2] + f[0]);
+      finer.push_back({{f[0], ab, ca}});
+      finer.push_back({{ab, f[1], bc}});
+      finer.push_back({{ca, bc, f[2]}});
+      finer.push_back({{ab, bc, ca}});
+    }
+    faces.swap(finer);
+  }
+  for(const auto& f : faces)
+  {
+    std::array<std::size_t, 3> t;
+    for(int k = 0; k < 3; ++k)
+    {
+      const Point_3 p = centre + radius * f[k];
+      t[k] = b.point(p.x(), p.y(), p.z());
+    }
+    b.triangle(t[0], t[1], t[2], lens, f[0] + f[1] + f[2]);
+  }
+  BM::validate_geological_model(m);
+
+  const double median = median_edge_length(m), size = 0.25;
+  Model g;
+  const BM::Planar_retriangulation_report r =
+    BM::retriangulate_planar_patches(m, g, BM::parameters::edge_length(size));
+  BM::validate_geological_model(g);
+  std::cout << "fine body in a coarse box, edge_length " << size << " (median input edge " << median << "): " << r
+            << std::endl;
+  assert_same_surface(m, g, box);
+  assert_same_surface(m, g, lens);
+  assert(patch_surface(m, lens).triangles == patch_surface(g, lens).triangles);
+
+  // a triangle is refined while sqrt(3) times its circumradius exceeds the
+  // size, so no edge is left over 2 / sqrt(3) times it; none is refined down
+  // to the median either (walls at it would take about one point per 0.43 median^2)
+  const double longest_before = longest_patch_edge(m, box), longest_after = longest_patch_edge(g, box);
+  const Patch_surface walls = patch_surface(g, box);
+  std::set<std::size_t> wall_points;
+  for(const auto& t : walls.triangles) wall_points.insert(t.begin(), t.end());
+  std::cout << "  box: longest edge " << longest_before << " -> " << longest_after << ", " << wall_points.size()
+            << " points (at the median edge: about " << std::size_t(walls.area / (0.43 * median * median)) << ")"
+            << std::endl;
+  assert(longest_before > 4. * size && longest_after <= 2. / std::sqrt(3.) * size * (1. + 1e-9));
+  assert(longest_after > 4. * median);
+
+  // the same size as a share of the bounding-box diagonal (rounded: a point
+  // more or less where a triangle is just at the size)
+  Model h;
+  const double diagonal = std::sqrt(X * X + Y * Y + Z * Z);
+  BM::retriangulate_planar_patches(m, h, BM::parameters::relative_edge_length(size / diagonal));
+  assert(std::abs(double(h.number_of_points()) - double(g.number_of_points())) <= 0.02 * double(g.number_of_points()));
+  assert(longest_patch_edge(h, box) <= 2. / std::sqrt(3.) * size * (1. + 1e-9));
+
+  C3T3 c3t3;
+  mesh_and_check("fine body in a coarse box, walls refined to edge_length", g, jittered_lattice(BM::bbox(g), size, 14),
+                 c3t3);
+}
+
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
 void test_layered_model()
 {
@@ -1159,6 +1265,7 @@ int main(int argc, char** argv)
   test_planar_retriangulation();
   test_planar_refinement();
   test_tilted_refinement();
+  test_fine_body_in_coarse_box();
 #ifdef BUBBLE_MESH_3_TEST_HAS_LAYERED_MODEL
   test_layered_model();
   test_turned_layered_model();

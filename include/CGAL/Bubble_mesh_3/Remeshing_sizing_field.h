@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/model_features.h>
+#include <CGAL/Bubble_mesh_3/internal/asked_edge_length.h>
 #include <CGAL/Bubble_mesh_3/internal/remeshing_parameters.h>
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -27,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstddef>
 #include <iterator>
 #include <limits>
@@ -161,19 +163,10 @@ public:
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
-    using CGAL::parameters::is_default_parameter;
 
-    const Bbox_3 box = Bubble_mesh_3::bbox(model);
-    diagonal_ = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                          CGAL::square(box.zmax() - box.zmin()));
-
-    double size = 0.;
-    if(!is_default_parameter<CGAL_NP_CLASS, internal_np::edge_length_t>::value)
-      size = choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
-    else if(!is_default_parameter<CGAL_NP_CLASS, internal_np::relative_edge_length_t>::value)
-      size = choose_parameter(get_parameter(np, internal_np::relative_edge_length), 0.) * diagonal_;
-    else
-      size = median_edge_length(model);
+    diagonal_ = internal::bbox_diagonal(model);
+    const std::optional<double> asked = internal::asked_edge_length(model, np);
+    const double size = asked ? *asked : median_edge_length(model);
     CGAL_precondition_msg(size > 0., "the target edge length must be positive");
     user_size_ = size;
 

@@ -8,12 +8,14 @@
 
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
+#include <CGAL/Bubble_mesh_3/internal/asked_edge_length.h>
 #include <CGAL/Bubble_mesh_3/internal/planar_pieces.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cstddef>
+#include <optional>
 
 namespace CGAL {
 namespace Bubble_mesh_3 {
@@ -67,9 +69,14 @@ piece covers the same polygon as before.
   new points, exactly on the plane, and so are circumcentres of triangles
   wider than the size wanted there: the spacing of the points on the
   piece's border and on the curves inside it, growing by half the distance
-  from them, at most the median input edge of the model (a wall or a bottom
-  given as two huge triangles would stay bare: the bubbles beside it would
-  have no neighbour on that side). An edge it shares only with pieces being
+  from them, at most the median input edge of the model or the size asked
+  for (`edge_length`, `relative_edge_length`; a wall or a bottom given as two
+  huge triangles would stay bare: the bubbles beside it would have no
+  neighbour on that side). The median suits models whose surfaces are
+  triangulated alike; where a small, finely triangulated body (an ore lens,
+  a tunnel) holds most of the edges, walls refined to its size make the
+  whole box that fine, and a size asked for keeps them coarser (bench/README.md,
+  session 37). An edge it shares only with pieces being
   refined is split at its midpoint (exactly on the edge) where a
   circumcentre would come too close to it. Edges shared with a triangle that
   is not refined (a needle of a fault, say, or with
@@ -123,6 +130,16 @@ The model must be valid (`validate_geological_model()`).
     \cgalParamDefault{`default_tilted_size_factor` (1.5)}
     \cgalParamExtra{at least 1}
   \cgalParamNEnd
+  \cgalParamNBegin{edge_length}
+    \cgalParamDescription{the largest edge wanted on refined pieces, in model units (the parameter of `remesh_surfaces()`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the median input edge length}
+  \cgalParamNEnd
+  \cgalParamNBegin{relative_edge_length}
+    \cgalParamDescription{the same as a fraction of the bounding-box diagonal (if `edge_length` is not given)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{unused}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 */
 template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -136,7 +153,9 @@ Planar_retriangulation_report retriangulate_planar_patches(const Geological_mode
   const bool tilted = choose_parameter(get_parameter(np, internal_np::refine_tilted_pieces), true);
   const double factor = choose_parameter(get_parameter(np, internal_np::tilted_size_factor), default_tilted_size_factor);
   CGAL_precondition_msg(factor >= 1., "tilted_size_factor must be at least 1");
-  internal::Planar_pieces<GeomTraits> pieces(input, bound, tilted, factor);
+  const std::optional<double> size = internal::asked_edge_length(input, np);
+  CGAL_precondition_msg(!size || *size > 0., "the edge length asked for must be positive");
+  internal::Planar_pieces<GeomTraits> pieces(input, bound, tilted, factor, size ? *size : 0.);
   return pieces.run(output);
 }
 

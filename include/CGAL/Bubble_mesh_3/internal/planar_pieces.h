@@ -135,8 +135,10 @@ class Planar_pieces
 public:
   // `refine_tilted`: whether pieces off the axis planes (and single
   // triangles of curved surfaces) get points for size too, where a triangle
-  // is `tilted_size_factor` times as wide as the size wanted
-  Planar_pieces(const Model& input, double angle_bound, bool refine_tilted, double tilted_size_factor)
+  // is `tilted_size_factor` times as wide as the size wanted; `size_cap`:
+  // the largest size wanted (0: the median input edge)
+  Planar_pieces(const Model& input, double angle_bound, bool refine_tilted, double tilted_size_factor,
+                double size_cap = 0.)
     : in_(input), np_(input.number_of_points()), nt_(input.number_of_triangles()),
       sin_bound_(std::sin((std::min)(angle_bound, 34.) * CGAL_PI / 180.)), refine_(angle_bound > 0.),
       refine_tilted_(refine_tilted), tilted_size_factor_(tilted_size_factor),
@@ -145,6 +147,7 @@ public:
     build_edges();
     build_pieces();
     if(refine_) measure_edges();
+    if(size_cap > 0.) size_cap_ = size_cap;
   }
 
   Planar_retriangulation_report run(Model& out)
@@ -638,7 +641,16 @@ private:
         typename CDT::Locate_type lt;
         int li;
         const typename CDT::Face_handle at = cdt.locate(c, lt, li, worst);
-        if(lt != CDT::FACE || at->info() != 1) { given_up.insert(worst_key); continue; }
+        // a circumcentre may lie on an edge inside the piece: a right
+        // triangle's, on the diagonal of a rectangle given as two triangles
+        // (on a constrained edge it would have hit that subsegment above).
+        // Only in an axis plane, where it is inserted exactly where it was
+        // located; a tilted piece's lifted and rounded point may fall beside.
+        const bool inside =
+          at->info() == 1 &&
+          (lt == CDT::FACE || (lt == CDT::EDGE && f.axis >= 0 && !cdt.is_constrained(std::make_pair(at, li)) &&
+                               at->neighbor(li)->info() == 1));
+        if(!inside) { given_up.insert(worst_key); continue; }
         const Point_3 q = lift(f, c);
         if(f.axis < 0 && !on_piece_plane(p, q)) { given_up.insert(worst_key); continue; }
         const std::size_t nv = cdt.number_of_vertices();
@@ -655,9 +667,9 @@ private:
   }
 
   // The edge length wanted on a piece: the spacing of the points on its
-  // boundary and on the curves inside it (a quarter of the median input edge
-  // at least), growing by half the distance from them, and at most the
-  // median input edge. Without it a wall or a bottom given as a few huge
+  // boundary and on the curves inside it (a quarter of the cap at least),
+  // growing by half the distance from them, and at most the cap (the median
+  // input edge, or the size asked for). Without it a wall or a bottom given as a few huge
   // triangles stays bare: the bubbles beside it have no neighbour on that
   // side, and its tetrahedra reach across the whole model.
   struct Size_source { double x, y, size; };
@@ -745,7 +757,7 @@ private:
   const double tilted_size_factor_;
   const double tolerance_; // coplanar up to the rounding of the points (near_coplanarity.h)
   double min_split_length_ = 0.;
-  double size_cap_ = std::numeric_limits<double>::infinity(); // the median input edge
+  double size_cap_ = std::numeric_limits<double>::infinity(); // the median input edge, or the size asked for
   std::size_t budget_ = 0;
 
   std::vector<std::array<std::size_t, 2> > edge_ends_;   // model point ids, first < second
