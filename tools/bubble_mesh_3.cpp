@@ -125,7 +125,9 @@ const char* usage_text =
 "  --layer-elements N         with --remesh-surfaces: edges wanted across the thickness\n"
 "                             of a thin layer, or between a fault tip and a horizon\n"
 "                             (default 2; 1 halves the sizes there, fewer tetrahedra and\n"
-"                             a faster run; 0 turns the rule off)\n"
+"                             a faster run; 0 turns the rule off). If the surfaces it\n"
+"                             refined cannot be recovered (a pinch-out), they are\n"
+"                             re-meshed without it\n"
 "  --size-grading G           with --remesh-surfaces: largest ratio between the sizes of\n"
 "                             neighbouring edges (default 1.5, above 1). Nearer 1 the\n"
 "                             sizes change more slowly away from thin layers and small\n"
@@ -551,6 +553,11 @@ int main(int argc, char** argv)
                 << opt.layer_elements << ") is the number of edges across them: with 1 they are twice as long, "
                    "with 0 the rule is off\n"
                 << std::defaultfloat;
+    if(report.thickness_rule_dropped)
+      std::cout << "note: the surface recovery failed on the re-meshed surfaces: " << report.thickness_rule_dropped_because
+                << "; they were re-meshed again without the thickness rule, with edges of the target size "
+                   "across thin layers and down to pinch-outs (as --layer-elements 0 does; giving it skips the "
+                   "failed attempt)\n";
     if(report.planar_patches_retriangulated)
     {
       std::cout << std::setprecision(4) << "planar pieces: " << pr << "\n" << std::defaultfloat;

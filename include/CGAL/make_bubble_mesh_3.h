@@ -43,6 +43,8 @@ struct Bubble_mesh_report
   bool tilted_refinement_coarsened = false;   ///< whether the mesh was made again with `fallback_tilted_size_factor` (2) after the surface recovery failed with the smaller factor asked for (or the default)
   bool tilted_refinement_undone = false;      ///< whether the mesh was made again without new points on tilted pieces (`refine_tilted_pieces(false)`) after the surface recovery failed with them
   std::string tilted_refinement_undone_because; ///< when either is true, the surface recovery's errors (which input triangle it could not recover, and why), one per line
+  bool thickness_rule_dropped = false;        ///< whether the surfaces were re-meshed again without the thickness rule (`elements_across_thickness(0)`) after the surface recovery failed on those the rule had refined
+  std::string thickness_rule_dropped_because; ///< if so, the surface recovery's error on the first re-meshed surfaces
   std::size_t number_of_surface_bubbles = 0;  ///< one per model point
   std::size_t number_of_initial_bubbles = 0;  ///< interior bubbles placed (stage 2)
   std::size_t number_of_relaxed_bubbles = 0;  ///< interior bubbles after relaxation and population control
@@ -104,7 +106,10 @@ With `remesh_input_surfaces(true)`, the surfaces are first re-meshed with
 bubbles (`remesh_surfaces()`, stage 0) and the stages run on the re-meshed
 model: same regions and patches, so the mesh is labelled as the input is.
 Use it when the input triangles are poor: tetrahedra at a triangle with a
-tiny angle are poor whatever the bubbles do inside.
+tiny angle are poor whatever the bubbles do inside. If the surface recovery
+fails on re-meshed surfaces that the thickness rule refined (down to a
+pinch-out, say), they are re-meshed without the rule and the stages run again
+(`Bubble_mesh_report::thickness_rule_dropped`).
 
 The model must be valid (`validate_geological_model()`); the stages assume
 it. Each stage is a free function that can be called alone; this function
@@ -167,10 +172,9 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   // the stages below see the re-meshed model: same regions and patches, new points and triangles
   Geological_model_3<GeomTraits> remeshed;
   report->surfaces_remeshed = choose_parameter(get_parameter(np, internal_np::remesh_input_surfaces), false);
-  if(report->surfaces_remeshed)
-  {
+  auto remesh = [&](const auto& remesh_np) {
     timed("surface remeshing", report->time_surface_remeshing,
-          [&] { report->surface_remeshing = remesh_surfaces(input_model, remeshed, np); });
+          [&] { report->surface_remeshing = remesh_surfaces(input_model, remeshed, remesh_np); });
     // the later stages assume a valid model: a re-meshing that broke it is an error, not a wrong mesh
     try { validate_geological_model(remeshed); }
     catch(const Geological_model_error& e)
@@ -178,7 +182,8 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
       throw Geological_model_error(std::string("the re-meshed surfaces (remesh_surfaces()) are not a valid model; "
                                                "mesh without re-meshing or with another size: ") + e.what());
     }
-  }
+  };
+  if(report->surfaces_remeshed) remesh(np);
   // Planar pieces (box walls, flat tops) as fans of needles would force poor
   // tetrahedra and thousands of Steiner points; their own Delaunay
   // triangulation covers the same polygon. Re-meshed surfaces need none.
@@ -224,37 +229,56 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   try { stages_1_to_5(model); }
   catch(const Tetrahedralization_error& error)
   {
-    // The points rounded onto tilted pieces are the one thing here the
-    // recovery has not met in the input: rather than fail, mesh again
-    // without them (axis-plane pieces still refined).
-    if(!report->planar_patches_retriangulated || report->planar_retriangulation.number_of_refined_tilted_pieces == 0)
-      throw;
-    report->tilted_refinement_undone_because = error.what();
-    // A smaller factor refines more pieces, each one more chance of a point
-    // the recovery cannot handle: twice the size wanted comes next (the
-    // default until every model in ../shared recovered at 1.5).
-    bool made = false;
-    if(choose_parameter(get_parameter(np, internal_np::tilted_size_factor), default_tilted_size_factor) <
-       fallback_tilted_size_factor)
+    if(report->surfaces_remeshed)
     {
-      report->tilted_refinement_coarsened = true;
-      report->planar_retriangulation = retriangulate_planar_patches(
-        input_model, retriangulated, parameters::tilted_size_factor(fallback_tilted_size_factor, np));
-      if(report->planar_retriangulation.number_of_refined_tilted_pieces > 0)
+      // Where the thickness rule refines the surfaces down to a pinch-out
+      // (two surfaces meeting at a few degrees), the points of the two are
+      // close and not aligned; each encroaches on the other's facets and the
+      // recovery may refine towards the contact until it gives up (a layer
+      // pinching out at 1.7 degrees, re-meshed at 40 with 2 edges across).
+      // Sizes without the rule leave far fewer points there: once more so.
+      if(report->surface_remeshing.smallest_thickness_size <= 0. ||
+         report->surface_remeshing.smallest_thickness_size >= report->surface_remeshing.target_size)
+        throw;
+      report->thickness_rule_dropped = true;
+      report->thickness_rule_dropped_because = error.what();
+      remesh(parameters::elements_across_thickness(0., np));
+      stages_1_to_5(remeshed);
+    }
+    else
+    {
+      // The points rounded onto tilted pieces are the one thing here the
+      // recovery has not met in the input: rather than fail, mesh again
+      // without them (axis-plane pieces still refined).
+      if(!report->planar_patches_retriangulated || report->planar_retriangulation.number_of_refined_tilted_pieces == 0)
+        throw;
+      report->tilted_refinement_undone_because = error.what();
+      // A smaller factor refines more pieces, each one more chance of a point
+      // the recovery cannot handle: twice the size wanted comes next (the
+      // default until every model in ../shared recovered at 1.5).
+      bool made = false;
+      if(choose_parameter(get_parameter(np, internal_np::tilted_size_factor), default_tilted_size_factor) <
+         fallback_tilted_size_factor)
       {
-        try { stages_1_to_5(retriangulated); made = true; }
-        catch(const Tetrahedralization_error& again)
+        report->tilted_refinement_coarsened = true;
+        report->planar_retriangulation = retriangulate_planar_patches(
+          input_model, retriangulated, parameters::tilted_size_factor(fallback_tilted_size_factor, np));
+        if(report->planar_retriangulation.number_of_refined_tilted_pieces > 0)
         {
-          report->tilted_refinement_undone_because += std::string("\n") + again.what();
+          try { stages_1_to_5(retriangulated); made = true; }
+          catch(const Tetrahedralization_error& again)
+          {
+            report->tilted_refinement_undone_because += std::string("\n") + again.what();
+          }
         }
       }
-    }
-    if(!made)
-    {
-      report->tilted_refinement_undone = true;
-      report->planar_retriangulation =
-        retriangulate_planar_patches(input_model, retriangulated, parameters::refine_tilted_pieces(false, np));
-      stages_1_to_5(retriangulated);
+      if(!made)
+      {
+        report->tilted_refinement_undone = true;
+        report->planar_retriangulation =
+          retriangulate_planar_patches(input_model, retriangulated, parameters::refine_tilted_pieces(false, np));
+        stages_1_to_5(retriangulated);
+      }
     }
   }
 

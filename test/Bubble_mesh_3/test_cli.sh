@@ -110,6 +110,28 @@ check "--size with --keep-input-triangles exits 2" test "$rc" -eq 2
 check "--size with --keep-input-triangles says why" contains "$err" "it does nothing with --keep-input-triangles"
 check "no output after a usage error" test ! -e "$tmp/lens_kept.mesh"
 
+# a layer pinching out at 1.72 degrees and a fault ending inside the body below, as Gmsh
+# meshes them: re-meshed with the thickness rule, the surfaces crowd the pinch-out and the
+# surface recovery gives up there; the program re-meshes them without the rule and says so
+if /usr/bin/python3 -c "import gmsh" 2>/dev/null; then
+  /usr/bin/python3 "$here/make_pinch_out_model.py" "$tmp/pinch.obj"
+  run "$tmp/pinch.obj" --check
+  check "pinch-out model: --check warns of the 1.72-degree contact" contains "$out" "meet at 1.72 deg"
+  run "$tmp/pinch.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/pinch.mesh"
+  check "pinch-out model re-meshed exits 0" test "$rc" -eq 0
+  check "pinch-out model re-meshed writes its mesh" test -s "$tmp/pinch.mesh"
+  check "pinch-out model re-meshed: every region has tetrahedra" \
+    test "$(grep -cE '^  [123] (lower|upper|wedge) +[1-9]' <<<"$out")" -eq 3
+  if grep -q "note: the surface recovery failed on the re-meshed surfaces" <<<"$out"; then
+    echo "  pinch-out model: re-meshed again without the thickness rule"
+    check "the note names --layer-elements 0" contains "$out" "as --layer-elements 0 does"
+  else
+    echo "  pinch-out model: the first re-meshed surfaces were recovered"
+  fi
+else
+  echo "SKIP: python3-gmsh is not installed (scripts/install_deps.sh --tests installs it)"
+fi
+
 # a GOCAD box of two layers whose contact is listed with the layers on the wrong sides (its
 # triangles face the upper layer, the file puts the lower one there): mended from the geometry
 python3 - "$tmp/split.ml" <<'PY'
