@@ -127,7 +127,7 @@ const char* usage_text =
 "                             (default 2; 1 halves the sizes there, fewer tetrahedra and\n"
 "                             a faster run; 0 turns the rule off). If the surfaces it\n"
 "                             refined cannot be recovered (a pinch-out), they are\n"
-"                             re-meshed without it\n"
+"                             re-meshed with N/2, then 0\n"
 "  --size-grading G           with --remesh-surfaces: largest ratio between the sizes of\n"
 "                             neighbouring edges (default 1.5, above 1). Nearer 1 the\n"
 "                             sizes change more slowly away from thin layers and small\n"
@@ -550,14 +550,17 @@ int main(int argc, char** argv)
       std::cout << std::setprecision(4) << "note: thin layers or fault tips (thickness down to "
                 << rr.smallest_thickness << ") make edges as short as " << rr.smallest_thickness_size
                 << " there, under the target size " << rr.target_size << "; --layer-elements (now "
-                << opt.layer_elements << ") is the number of edges across them: with 1 they are twice as long, "
+                << (report.thickness_rule_relaxed ? report.elements_across_thickness_used : opt.layer_elements)
+                << ") is the number of edges across them: with half as many they are twice as long, "
                    "with 0 the rule is off\n"
                 << std::defaultfloat;
-    if(report.thickness_rule_dropped)
-      std::cout << "note: the surface recovery failed on the re-meshed surfaces: " << report.thickness_rule_dropped_because
-                << "; they were re-meshed again without the thickness rule, with edges of the target size "
-                   "across thin layers and down to pinch-outs (as --layer-elements 0 does; giving it skips the "
-                   "failed attempt)\n";
+    if(report.thickness_rule_relaxed)
+      std::cout << "note: the surface recovery failed on the re-meshed surfaces: " << report.thickness_rule_relaxed_because
+                << "; they were re-meshed again with --layer-elements " << report.elements_across_thickness_used
+                << (report.elements_across_thickness_used > 0. ? " (fewer edges across thin layers and pinch-outs)"
+                                                               : " (the rule off: edges of the target size across thin "
+                                                                 "layers and down to pinch-outs)")
+                << "; giving it skips the failed attempt\n";
     if(report.planar_patches_retriangulated)
     {
       std::cout << std::setprecision(4) << "planar pieces: " << pr << "\n" << std::defaultfloat;

@@ -43,8 +43,9 @@ struct Bubble_mesh_report
   bool tilted_refinement_coarsened = false;   ///< whether the mesh was made again with `fallback_tilted_size_factor` (2) after the surface recovery failed with the smaller factor asked for (or the default)
   bool tilted_refinement_undone = false;      ///< whether the mesh was made again without new points on tilted pieces (`refine_tilted_pieces(false)`) after the surface recovery failed with them
   std::string tilted_refinement_undone_because; ///< when either is true, the surface recovery's errors (which input triangle it could not recover, and why), one per line
-  bool thickness_rule_dropped = false;        ///< whether the surfaces were re-meshed again without the thickness rule (`elements_across_thickness(0)`) after the surface recovery failed on those the rule had refined
-  std::string thickness_rule_dropped_because; ///< if so, the surface recovery's error on the first re-meshed surfaces
+  bool thickness_rule_relaxed = false;       ///< whether the surfaces were re-meshed again with fewer edges across thin layers after the surface recovery failed on those the thickness rule had refined
+  double elements_across_thickness_used = 0.; ///< if so, the `elements_across_thickness` of the surfaces meshed: half the one asked for, or 0 (the rule off) if that failed too
+  std::string thickness_rule_relaxed_because; ///< if so, the surface recovery's errors on the surfaces given up, one per line
   std::size_t number_of_surface_bubbles = 0;  ///< one per model point
   std::size_t number_of_initial_bubbles = 0;  ///< interior bubbles placed (stage 2)
   std::size_t number_of_relaxed_bubbles = 0;  ///< interior bubbles after relaxation and population control
@@ -108,8 +109,9 @@ model: same regions and patches, so the mesh is labelled as the input is.
 Use it when the input triangles are poor: tetrahedra at a triangle with a
 tiny angle are poor whatever the bubbles do inside. If the surface recovery
 fails on re-meshed surfaces that the thickness rule refined (down to a
-pinch-out, say), they are re-meshed without the rule and the stages run again
-(`Bubble_mesh_report::thickness_rule_dropped`).
+pinch-out, say), they are re-meshed with half as many edges across thin
+layers, then without the rule, and the stages run again
+(`Bubble_mesh_report::thickness_rule_relaxed`).
 
 The model must be valid (`validate_geological_model()`); the stages assume
 it. Each stage is a free function that can be called alone; this function
@@ -236,14 +238,25 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
       // close and not aligned; each encroaches on the other's facets and the
       // recovery may refine towards the contact until it gives up (a layer
       // pinching out at 1.7 degrees, re-meshed at 40 with 2 edges across).
-      // Sizes without the rule leave far fewer points there: once more so.
-      if(report->surface_remeshing.smallest_thickness_size <= 0. ||
-         report->surface_remeshing.smallest_thickness_size >= report->surface_remeshing.target_size)
-        throw;
-      report->thickness_rule_dropped = true;
-      report->thickness_rule_dropped_because = error.what();
-      remesh(parameters::elements_across_thickness(0., np));
-      stages_1_to_5(remeshed);
+      // Fewer edges across leave fewer points there: half as many, then the
+      // rule off.
+      const Surface_remeshing_report& first = report->surface_remeshing;
+      if(first.smallest_thickness_size <= 0. || first.smallest_thickness_size >= first.target_size) throw;
+      const double asked = choose_parameter(get_parameter(np, internal_np::elements_across_thickness),
+                                            Remeshing_sizing_field<GeomTraits>::default_elements_across_thickness);
+      report->thickness_rule_relaxed = true;
+      report->thickness_rule_relaxed_because = error.what();
+      for(const double across : {0.5 * asked, 0.})
+      {
+        report->elements_across_thickness_used = across;
+        remesh(parameters::elements_across_thickness(across, np));
+        if(across == 0.) { stages_1_to_5(remeshed); break; }
+        try { stages_1_to_5(remeshed); break; }
+        catch(const Tetrahedralization_error& again)
+        {
+          report->thickness_rule_relaxed_because += std::string("\n") + again.what();
+        }
+      }
     }
     else
     {
