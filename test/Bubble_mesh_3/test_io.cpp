@@ -221,6 +221,7 @@ static void test_obj_two_boxes()
     Model mm;
     std::istringstream s(t);
     BIO::read_multibody_obj(s, name, mm);
+    return mm;
   };
   expect_error("face with a missing vertex", [&] { read_text("o X\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "m.obj"); },
                {"m.obj:5:", "vertex 7", "'X'", "3 vertices"});
@@ -240,6 +241,15 @@ static void test_obj_two_boxes()
   expect_error("inside an unknown body", [&] { read_text("o F\n#@inside Nobody\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "m.obj"); },
                {"m.obj:1:", "'F'", "'Nobody'"});
   expect_error("unknown directive", [&] { read_text("o F\n#@insde X\n", "m.obj"); }, {"m.obj:2:", "#@insde"});
+  {
+    // the fault given again in a second piece, saying again where it lies: one patch
+    Model two = read_text(text + "g Fault in B\n#@inside B\nv 0.5 0.05 1.5\nf -3 -4 -1\n", "m.obj");
+    assert(two.number_of_triangles() == 24 && two.number_of_patches() == 4);
+    // ... or saying something else: an error naming where it was said to lie
+    expect_error("a group given again inside another body",
+                 [&] { read_text(text + "g Fault in B\n#@inside A\n", "m.obj"); },
+                 {"must come before the faces of group 'Fault in B'", "which lies inside 'B'"});
+  }
   {
     // the shared face listed with the same orientation in both bodies
     std::string t = text;

@@ -46,7 +46,7 @@ The format:
   other statement is an error.
 
 Directives, in comments other OBJ tools ignore:
-- `#@inside BODY` in a group (before its faces) makes the group a surface
+- `#@inside BODY` in a group (before its faces; again in a group given again) makes the group a surface
   inside the body named BODY (a fault that ends inside it, for instance):
   a patch with that body on both sides, named after the group;
 - `#@patch NAME` gives the faces that follow, up to the next group, the
@@ -121,8 +121,11 @@ void read_multibody_obj(std::istream& is, const std::string& name, Geological_mo
       {
         if(current == std::size_t(-1)) in.error_here("'#@inside' before any 'o' or 'g' group");
         if(arg.empty()) in.error_here("'#@inside' needs the name of the body the surface lies in");
-        if(!soup.bodies[current].triangles.empty())
-          in.error_here("'#@inside' must come before the faces of group '" + soup.bodies[current].name + "'");
+        // a group given again (a fault in pieces) may say again where it lies
+        if(!soup.bodies[current].triangles.empty() && soup.bodies[current].inside != arg)
+          in.error_here("'#@inside' must come before the faces of group '" + soup.bodies[current].name + "'" +
+                        (soup.bodies[current].inside.empty() ? std::string()
+                                                             : ", which lies inside '" + soup.bodies[current].inside + "'"));
         if(arg == soup.bodies[current].name)
           in.error_here("group '" + arg + "' cannot lie inside itself");
         soup.bodies[current].inside = arg;
