@@ -246,16 +246,15 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
                                             Remeshing_sizing_field<GeomTraits>::default_elements_across_thickness);
       report->thickness_rule_relaxed = true;
       report->thickness_rule_relaxed_because = error.what();
-      for(const double across : {0.5 * asked, 0.})
+      report->elements_across_thickness_used = 0.5 * asked;
+      remesh(parameters::elements_across_thickness(0.5 * asked, np));
+      try { stages_1_to_5(remeshed); }
+      catch(const Tetrahedralization_error& again)
       {
-        report->elements_across_thickness_used = across;
-        remesh(parameters::elements_across_thickness(across, np));
-        if(across == 0.) { stages_1_to_5(remeshed); break; }
-        try { stages_1_to_5(remeshed); break; }
-        catch(const Tetrahedralization_error& again)
-        {
-          report->thickness_rule_relaxed_because += std::string("\n") + again.what();
-        }
+        report->thickness_rule_relaxed_because += std::string("\n") + again.what();
+        report->elements_across_thickness_used = 0.;
+        remesh(parameters::elements_across_thickness(0., np));
+        stages_1_to_5(remeshed);
       }
     }
     else

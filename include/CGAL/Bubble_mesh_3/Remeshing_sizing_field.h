@@ -164,7 +164,7 @@ public:
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
 
-    diagonal_ = internal::bbox_diagonal(model);
+    diagonal_ = Bubble_mesh_3::bbox_diagonal(model);
     const std::optional<double> asked = internal::asked_edge_length(model, np);
     const double size = asked ? *asked : median_edge_length(model);
     CGAL_precondition_msg(size > 0., "the target edge length must be positive");

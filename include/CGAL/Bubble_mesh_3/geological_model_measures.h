@@ -318,6 +318,15 @@ Bbox_3 bbox(const Geological_model_3<GeomTraits>& model)
   return bbox_3(model.points().begin(), model.points().end());
 }
 
+/// the length of the diagonal of the model's bounding box (`bbox()`)
+template <class GeomTraits>
+double bbox_diagonal(const Geological_model_3<GeomTraits>& model)
+{
+  const Bbox_3 box = bbox(model);
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
 } // namespace Bubble_mesh_3
 } // namespace CGAL
 

@@ -329,9 +329,7 @@ tetrahedralize_bubbles(const Geological_model_3<GeomTraits>& model,
   const bool drop = choose_parameter(get_parameter(np, internal_np::drop_encroaching_points), true);
   const double ratio_bound = choose_parameter(get_parameter(np, internal_np::drop_ball_ratio_bound), 1.);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  const Bbox_3 box = bbox(model);
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+  const double diagonal = bbox_diagonal(model);
   typename Recovery::Options options;
   options.maximum_number_of_steiner_points = choose_parameter(
     get_parameter(np, internal_np::maximum_number_of_steiner_points),

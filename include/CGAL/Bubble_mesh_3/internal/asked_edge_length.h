@@ -18,21 +18,11 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <cmath>
 #include <optional>
 
 namespace CGAL {
 namespace Bubble_mesh_3 {
 namespace internal {
-
-// the model's bounding-box diagonal
-template <class GeomTraits>
-double bbox_diagonal(const Geological_model_3<GeomTraits>& model)
-{
-  const Bbox_3 box = Bubble_mesh_3::bbox(model);
-  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                   CGAL::square(box.zmax() - box.zmin()));
-}
 
 // `edge_length` if given, else `relative_edge_length` times the diagonal if
 // given, else nothing (the caller's default)
@@ -45,7 +35,7 @@ std::optional<double> asked_edge_length(const Geological_model_3<GeomTraits>& mo
   if(!is_default_parameter<CGAL_NP_CLASS, internal_np::edge_length_t>::value)
     return choose_parameter(get_parameter(np, internal_np::edge_length), 0.);
   if(!is_default_parameter<CGAL_NP_CLASS, internal_np::relative_edge_length_t>::value)
-    return choose_parameter(get_parameter(np, internal_np::relative_edge_length), 0.) * bbox_diagonal(model);
+    return choose_parameter(get_parameter(np, internal_np::relative_edge_length), 0.) * Bubble_mesh_3::bbox_diagonal(model);
   return std::nullopt;
 }
 
