@@ -61,7 +61,7 @@ const char* usage =
   "                            [--remesh-surfaces | --planar [--tilted-size-factor F]]\n"
   "                            [--repulsive] [--by-wall]\n"
   "                            [--cell-edge-factor F] [--graded-cells G]\n"
-  "                            [--damping C] [--resting R]\n"
+  "                            [--damping C] [--resting R] [--paper-overlap-ratio]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -92,6 +92,9 @@ const char* usage =
   "            damping c (default: its own, 2 sqrt(m k) = 2 with m = k = 1).\n"
   "            --resting passes its resting_displacement_ratio (default: its own;\n"
   "            0: every bubble moves at every step). Bubble-steps count moved bubbles.\n"
+  "            --paper-overlap-ratio: population control with METHOD.md's ratio as it\n"
+  "            stands (solid_angle_overlap_ratio(false)); the share of interior bubbles\n"
+  "            inside [10,14] is printed with both ratios either way.\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
@@ -307,7 +310,8 @@ void print_wall_classes(const Model& m, const std::vector<Bubble>& interior, con
 }
 
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, int planar, double tilted_factor, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting)
+                bool remesh, int planar, double tilted_factor, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting,
+                bool paper_ratio)
 {
   std::ostringstream table;
   table << "| model | interior | outside | relax wall s | CPU s | steps | rounds | min | 1% | 5% | 25% | 50% | 75% | "
@@ -369,8 +373,8 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     clock.print_rounds = print_rounds;
     const std::string load = load_average();
     const double c0 = cpu_seconds();
-    const auto np = params::number_of_threads(
-      threads, params::resting_displacement_ratio(resting, params::neighbor_skin(skin, params::visitor(std::ref(clock)))));
+    const auto np = params::solid_angle_overlap_ratio(!paper_ratio, params::number_of_threads(
+      threads, params::resting_displacement_ratio(resting, params::neighbor_skin(skin, params::visitor(std::ref(clock))))));
     const auto relax = [&](const auto& with) {
       return repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), with))
                        : BM::relax_bubbles(m, surface, interior, sizing, with);
@@ -381,7 +385,11 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     std::size_t outside = 0;
     for(const Bubble& b : interior)
       if(!sides.inside(b)) ++outside;
-    std::vector<double> alpha = BM::overlap_ratios(m, surface, interior);
+    std::vector<double> alpha = BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(!paper_ratio));
+    // METHOD.md's formula as it stands (neighbours counted whatever their size), for issue 5's figure
+    std::size_t paper_inside = 0;
+    for(double a : BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(false)))
+      paper_inside += (a >= 10. && a <= 14.);
     const std::vector<double> alpha_of_bubble = alpha;
     std::sort(alpha.begin(), alpha.end());
     std::size_t rounds = 0, converged = 0;
@@ -397,7 +405,9 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
               << clock.between_rounds << " s (meaningful with 1 thread: regions run one after the other)\n"
               << "  outside their region (Side_of_triangle_mesh): " << outside << "; overlap ratio <10: " << rep.below
               << ", [10,14]: " << rep.inside << ", >14: " << rep.above << " -> " << std::setprecision(4)
-              << 100. * rep.share_inside_bounds() << " % inside\n  histogram (bin k: k <= alpha < k+1):";
+              << 100. * rep.share_inside_bounds() << " % inside (METHOD.md's unweighted ratio: "
+              << 100. * double(paper_inside) / double((std::max)(std::size_t(1), interior.size()))
+              << " % inside)\n  histogram (bin k: k <= alpha < k+1):";
     for(std::size_t b = 0; b < rep.overlap_histogram.size(); ++b)
       if(rep.overlap_histogram[b] > 0) std::cout << " " << b << ":" << rep.overlap_histogram[b];
     std::cout << std::endl;
@@ -458,7 +468,7 @@ int main(int argc, char** argv)
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
-  bool print_rounds = false, remesh = false, repulsive = false, by_wall = false;
+  bool print_rounds = false, remesh = false, repulsive = false, by_wall = false, paper_ratio = false;
   int planar = 0; // 1: retriangulate_planar_patches() defaults, 2: axis planes only
   double tilted_factor = BM::default_tilted_size_factor; // its tilted_size_factor
   for(int i = 2; i < argc; ++i)
@@ -486,6 +496,7 @@ int main(int argc, char** argv)
     }
     else if(a == "--resting" && alpha && has_value) resting = std::atof(argv[++i]);
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
+    else if(a == "--paper-overlap-ratio" && alpha) paper_ratio = true;
     else if(a == "--planar" && alpha) planar = 1;
     else if(a == "--planar-axis-only" && alpha) planar = 2;
     else if(a == "--tilted-size-factor" && alpha && has_value)
@@ -520,5 +531,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, tilted_factor, repulsive, by_wall, cell_edge_factor, graded, damping, resting);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, tilted_factor, repulsive, by_wall, cell_edge_factor, graded, damping, resting, paper_ratio);
 }

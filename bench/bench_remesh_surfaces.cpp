@@ -135,8 +135,9 @@ int main(int argc, char** argv)
   }
 
   std::cout << "| model | triangles in -> out | min angle in -> out | under 25 deg (forced by corners) "
-               "| edges in [0.5,1.5] | volume rel. error (bound) | curve Hausdorff / diag | valid | time s |\n"
-            << "|---|---|---|---|---|---|---|---|---|\n";
+               "| edges in [0.5,1.5] | volume rel. error (bound) | triangle distance / size: max, % beyond bound "
+               "| curve Hausdorff / diag | valid | time s |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|\n";
   int status = EXIT_SUCCESS;
   for(const std::string& file : files)
   {
@@ -179,7 +180,8 @@ int main(int argc, char** argv)
         << r.number_of_triangles << " | " << r.input_min_angle << " -> " << r.min_angle << " | "
         << r.number_of_small_angle_triangles << " (" << r.number_of_forced_small_angle_triangles << ") | "
         << 100. * r.share_of_edges_within_size << " % | " << r.max_relative_volume_error << " (" << worst_bound
-        << ") | " << r.max_curve_distance << " | " << (problems.empty() ? "yes" : "NO") << " | " << r.time << " |";
+        << ") | " << r.max_triangle_distance << ", " << 100. * r.share_of_triangles_beyond_distance << " % beyond "
+        << r.surface_distance << " | " << r.max_curve_distance << " | " << (problems.empty() ? "yes" : "NO") << " | " << r.time << " |";
     std::cout << row.str() << std::endl;
     if(show_details)
     {

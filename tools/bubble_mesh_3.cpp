@@ -84,6 +84,11 @@ const char* usage_text =
 "                             repulsive (the same without the attraction: bubbles do not\n"
 "                             stack where they are sparse; better tetrahedra on models\n"
 "                             with graded sizes, longer relaxation)\n"
+"  --paper-overlap-ratio      population control with the paper's overlap ratio, which\n"
+"                             counts neighbours whatever their size; by default each\n"
+"                             interior one counts by the solid angle it takes, so that\n"
+"                             graded sizes settle instead of trading bubbles round\n"
+"                             after round\n"
 "  --smooth N                 sliver removal also smooths all interior vertices, at most\n"
 "                             N passes (default 0: off): each moves towards the\n"
 "                             optimal-Delaunay point of its star (or the centroid of its\n"
@@ -180,6 +185,7 @@ struct Options
   double sliver_bound = 15.;
   bool remesh_surfaces = false;
   bool repulsive_force = false;
+  bool paper_overlap_ratio = false;
   bool keep_input_triangles = false;
   double planar_angle_bound = 10.;
   bool refine_tilted_pieces = true;
@@ -267,6 +273,7 @@ Options parse_options(int argc, char** argv)
       if(v == "repulsive") o.repulsive_force = true;
       else if(v != "cubic") usage_error("--force-law takes cubic or repulsive, not '" + v + "'");
     }
+    else if(a == "--paper-overlap-ratio") o.paper_overlap_ratio = true;
     else if(a == "--keep-input-triangles") o.keep_input_triangles = true;
     else if(a == "--planar-angle-bound") o.planar_angle_bound = parse_double(a, value(a));
     else if(a == "--axis-planes-only") o.refine_tilted_pieces = false;
@@ -491,7 +498,8 @@ int main(int argc, char** argv)
                     BM::parameters::size_grading(opt.size_grading,
                     BM::parameters::refine_ribbons(opt.refine_ribbons,
                     BM::parameters::number_of_population_rounds(opt.population_rounds,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))));
+                    BM::parameters::solid_angle_overlap_ratio(!opt.paper_overlap_ratio,
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

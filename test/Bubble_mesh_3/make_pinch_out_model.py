@@ -53,6 +53,41 @@ def oriented(triangles, coords):
     return [tuple(t[::-1]) for t in tris] if volume < 0 else [tuple(t) for t in tris]
 
 
+def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
+    """Writes Gmsh's current surface mesh as a multi-body OBJ: each volume as a
+    closed body named body_name(x, z, volume) of its centre of mass, and the one
+    surface that bounds no volume as group free_name inside body free_inside."""
+    occ = gmsh.model.occ
+    tags, flat, _ = gmsh.model.mesh.getNodes()
+    index = {int(t): i + 1 for i, t in enumerate(tags)}
+    coords = [tuple(flat[3 * i:3 * i + 3]) for i in range(len(tags))]
+
+    def triangles(surface):
+        _, _, nodes = gmsh.model.mesh.getElements(2, surface)
+        n = nodes[0]
+        return [tuple(index[int(n[k + m])] for m in range(3)) for k in range(0, len(n), 3)]
+
+    lines = ["# made by " + made_by]
+    lines += ["v %.12g %.12g %.12g" % p for p in coords]
+    bounding = set()
+    for _, body in gmsh.model.getEntities(3):
+        x, _, z = occ.getCenterOfMass(3, body)
+        lines.append("o " + body_name(x, z, occ.getMass(3, body)))
+        tris = []
+        for _, s in gmsh.model.getBoundary([(3, body)], oriented=False, recursive=False):
+            bounding.add(abs(s))
+            tris += triangles(abs(s))
+        lines += ["f %d %d %d" % t for t in oriented(tris, coords)]
+    free = [s for _, s in gmsh.model.getEntities(2) if s not in bounding]
+    if len(free) != 1:
+        raise SystemExit("%s: the %s should be one surface inside the %s body, got %d"
+                         % (made_by.split()[0], free_name, free_inside, len(free)))
+    lines += ["g " + free_name, "#@inside " + free_inside, "#@patch " + free_name]
+    lines += ["f %d %d %d" % t for t in triangles(free[0])]
+    with open(path, "w") as out:
+        out.write("\n".join(lines) + "\n")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out")
@@ -81,35 +116,10 @@ def main():
     gmsh.option.setNumber("Mesh.MeshSizeMin", a.edge / 4)
     gmsh.model.mesh.generate(2)
 
-    tags, flat, _ = gmsh.model.mesh.getNodes()
-    index = {int(t): i + 1 for i, t in enumerate(tags)}
-    coords = [tuple(flat[3 * i:3 * i + 3]) for i in range(len(tags))]
-
-    def triangles(surface):
-        _, _, nodes = gmsh.model.mesh.getElements(2, surface)
-        n = nodes[0]
-        return [tuple(index[int(n[k + m])] for m in range(3)) for k in range(0, len(n), 3)]
-
-    lines = ["# made by make_pinch_out_model.py --slope %g --edge %g --width %g (%.3f degrees)"
-             % (a.slope, a.edge, a.width, math.degrees(math.atan(a.slope)))]
-    lines += ["v %.12g %.12g %.12g" % p for p in coords]
-    bounding = set()
-    for _, body in gmsh.model.getEntities(3):
-        x, _, z = occ.getCenterOfMass(3, body)
-        name = "wedge" if abs(z - 200) < 40 and x < 400 else ("lower" if z < 200 else "upper")
-        lines.append("o " + name)
-        tris = []
-        for _, s in gmsh.model.getBoundary([(3, body)], oriented=False, recursive=False):
-            bounding.add(abs(s))
-            tris += triangles(abs(s))
-        lines += ["f %d %d %d" % t for t in oriented(tris, coords)]
-    free = [s for _, s in gmsh.model.getEntities(2) if s not in bounding]
-    if len(free) != 1:
-        raise SystemExit("make_pinch_out_model.py: the fault should be one surface inside the lower body, got %d"
-                         % len(free))
-    lines += ["g fault", "#@inside lower", "#@patch fault"] + ["f %d %d %d" % t for t in triangles(free[0])]
-    with open(a.out, "w") as out:
-        out.write("\n".join(lines) + "\n")
+    write_multibody_obj(a.out, "make_pinch_out_model.py --slope %g --edge %g --width %g (%.3f degrees)"
+                        % (a.slope, a.edge, a.width, math.degrees(math.atan(a.slope))),
+                        lambda x, z, mass: "wedge" if abs(z - 200) < 40 and x < 400 else ("lower" if z < 200 else "upper"),
+                        "fault", "lower")
     gmsh.finalize()
 
 

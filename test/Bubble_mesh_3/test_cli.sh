@@ -128,6 +128,25 @@ if /usr/bin/python3 -c "import gmsh" 2>/dev/null; then
   else
     echo "  pinch-out model: the first re-meshed surfaces were recovered"
   fi
+  # a fault with throw (horizons ending on it at other heights on either side), a tunnel
+  # a horizon cuts in two, and a small fault ending inside a layer: every region meshed,
+  # each with the volume the model gives it (the surfaces kept exactly, the tunnel too)
+  /usr/bin/python3 "$here/make_fault_tunnel_model.py" "$tmp/tunnel.obj"
+  run "$tmp/tunnel.obj" --check --summary-json "$tmp/tunnel_summary.json"
+  check "fault-and-tunnel model: --check exits 0" test "$rc" -eq 0
+  check "fault-and-tunnel model: the small fault lies inside foot_1" contains "$out" "'small_fault' in region 3 'foot_1'"
+  run "$tmp/tunnel.obj" --threads 2 -o "$tmp/tunnel.mesh" --quality-json "$tmp/tunnel_quality.json"
+  check "fault-and-tunnel model meshes" test "$rc" -eq 0
+  volumes="$(/usr/bin/python3 - "$tmp/tunnel_summary.json" "$tmp/tunnel_quality.json" <<'PY'
+import json, sys
+model = {r["name"]: r["volume"] for r in json.load(open(sys.argv[1]))["regions"]}
+mesh = {r["name"]: (r["tetrahedra"], r["volume"]) for r in json.load(open(sys.argv[2]))["regions"]}
+bad = [n for n, v in model.items() if n not in mesh or mesh[n][0] == 0 or abs(mesh[n][1] - v) > 1e-9 * v]
+print("%d regions, %s" % (len(model), "all meshed with their volumes" if not bad else "wrong: " + " ".join(bad)))
+PY
+)"
+  echo "  fault-and-tunnel model: $volumes"
+  check "fault-and-tunnel model: 8 regions, each meshed with its volume" test "$volumes" = "8 regions, all meshed with their volumes"
 else
   echo "SKIP: python3-gmsh is not installed (scripts/install_deps.sh --tests installs it)"
 fi

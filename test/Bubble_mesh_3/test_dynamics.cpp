@@ -140,6 +140,50 @@ static void test_two_bubbles()
   }
 }
 
+// -- 2a. the overlap ratio: a bubble of radius 1 touched by six bubbles of
+// radius 2 (at rest distance 3) counts 6 with METHOD.md's formula and six
+// times the big neighbours' solid angle over an equal one's with the default
+// weighting; each big bubble, touched by the small one and by nothing else,
+// counts 1 and about half of it; a surface bubble and equal radii count the
+// same either way
+static void test_overlap_ratio_weighting()
+{
+  const Model cube = make_cube(40., 4);
+  std::vector<Bubble> interior;
+  interior.push_back(Bubble(Point_3(20., 20., 20.), 1., 1, BM::no_index, false));
+  const double axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for(const auto& a : axes)
+    interior.push_back(Bubble(Point_3(20. + 3. * a[0], 20. + 3. * a[1], 20. + 3. * a[2]), 2., 1, BM::no_index, false));
+  const std::vector<Bubble> none;
+  const std::vector<double> paper = BM::overlap_ratios(cube, none, interior, params::solid_angle_overlap_ratio(false));
+  const std::vector<double> solid = BM::overlap_ratios(cube, none, interior);
+  // solid angle of a neighbour at rest distance: 1 - cos t with sin t = r_j / (r_i + r_j)
+  const double w_big = (1. - std::sqrt(1. - 4. / 9.)) / (1. - std::sqrt(3.) / 2.);   // 1.900
+  const double w_small = (1. - std::sqrt(1. - 1. / 9.)) / (1. - std::sqrt(3.) / 2.); // 0.429
+  // two big neighbours at 3 sqrt 2 = 4.24 (reach 2 * 2 + 2 = 6) overlap too: add their terms
+  const double big_pair = (6. - 3. * std::sqrt(2.)) / 2.;
+  std::cout << "overlap ratio, small bubble among six big ones: " << paper[0] << " (METHOD.md), " << solid[0]
+            << " (solid angle); a big one: " << paper[1] << ", " << solid[1] << std::endl;
+  assert(std::abs(paper[0] - 6.) < 1e-12);
+  assert(std::abs(solid[0] - 6. * w_big) < 1e-12);
+  assert(std::abs(paper[1] - (1. + 4. * big_pair)) < 1e-12);
+  assert(std::abs(solid[1] - (w_small + 4. * big_pair)) < 1e-12);
+  // a surface bubble counts unweighted: a small bubble touching only a big
+  // surface bubble (at the cube's point (20, 20, 0)) counts 1 either way
+  std::vector<Bubble> wall;
+  for(std::size_t k = 0; k < cube.number_of_points(); ++k)
+    if(cube.point(k) == Point_3(20., 20., 0.)) wall.push_back(Bubble(cube.point(k), 2., BM::no_index, k, true));
+  assert(wall.size() == 1);
+  std::vector<Bubble> near_wall(1, Bubble(Point_3(20., 20., 3.), 1., 1, BM::no_index, false));
+  assert(BM::overlap_ratios(cube, wall, near_wall)[0] == 1.);
+  assert(BM::overlap_ratios(cube, wall, near_wall, params::solid_angle_overlap_ratio(false))[0] == 1.);
+  // a uniform packing: the same ratios either way
+  for(Bubble& b : interior) b.radius = 1.5;
+  const std::vector<double> p2 = BM::overlap_ratios(cube, none, interior, params::solid_angle_overlap_ratio(false));
+  const std::vector<double> s2 = BM::overlap_ratios(cube, none, interior);
+  for(std::size_t i = 0; i < p2.size(); ++i) assert(p2[i] == s2[i]);
+}
+
 // -- 2b. the repulsive law: the cubic below w = 1, nothing beyond; two
 // overlapping bubbles part until they touch, two within the cubic's
 // attraction range stay where they are (the cubic would pull them together)
@@ -511,6 +555,7 @@ int main()
   test_force_law();
   test_repulsive_law();
   test_two_bubbles();
+  test_overlap_ratio_weighting();
   test_lattice_at_rest();
   test_strays();
   std::vector<Bubble> one, two;

@@ -896,7 +896,7 @@ void tally_overlaps(const Bubble_system<K>& s, const Dynamics_settings& st, Regi
   rep.overlap_histogram.assign(overlap_histogram_bins, 0);
   rep.below = rep.inside = rep.above = 0;
   if(s.n_free == 0) return;
-  const std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s);
+  const std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s, st.solid_angle_overlap);
   for(double a : alpha)
   {
     if(a < st.min_overlap) ++rep.below;
@@ -1229,6 +1229,13 @@ the end.
   \cgalParamNBegin{min_overlap_ratio, max_overlap_ratio}
     \cgalParamDescription{bounds of the overlap ratio of interior bubbles (see `overlap_ratios()`)}
     \cgalParamType{`double`} \cgalParamDefault{10 and 14 (the paper's)}
+  \cgalParamNEnd
+  \cgalParamNBegin{solid_angle_overlap_ratio}
+    \cgalParamDescription{weight each interior neighbour's term of the overlap ratio by the solid angle it takes,
+      against an equal neighbour's, so that the bounds mean the same in a graded field (surface bubbles count
+      unweighted); `false` gives METHOD.md's formula, which counts neighbours whatever their size (see
+      `overlap_ratios()`)}
+    \cgalParamType{`bool`} \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_population_rounds}
     \cgalParamDescription{most rounds of population control; 0 relaxes only}

@@ -752,7 +752,6 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
   report.max_point_distance = 0.;
   report.max_triangle_distance = 0.;
   std::size_t beyond = 0;
-  for(std::size_t v = 0; v < output.number_of_points(); ++v) (void)v;
   std::vector<char> seen(output.number_of_points(), 0);
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
   {

@@ -36,6 +36,7 @@ enum displacement_tolerance_t { displacement_tolerance };
 enum round_displacement_tolerance_t { round_displacement_tolerance };
 enum min_overlap_ratio_t { min_overlap_ratio };
 enum max_overlap_ratio_t { max_overlap_ratio };
+enum solid_angle_overlap_ratio_t { solid_angle_overlap_ratio };
 enum number_of_population_rounds_t { number_of_population_rounds };
 enum population_tolerance_t { population_tolerance };
 enum insertion_clearance_t { insertion_clearance };
@@ -74,6 +75,9 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, round_displacement_tolerance)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, min_overlap_ratio)
 /// upper bound of the overlap ratio of interior bubbles (default 14)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, max_overlap_ratio)
+/// each interior neighbour's term of the overlap ratio weighted by the solid angle it
+/// takes at rest distance, against an equal neighbour's (default `true`; `false`: METHOD.md's formula)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, solid_angle_overlap_ratio)
 /// most population-control rounds, each followed by a relaxation (default 12; 0 = none)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_population_rounds)
 /// the population has settled when a round changes at most this share of it, or one bubble (default 0.002)
