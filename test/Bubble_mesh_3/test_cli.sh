@@ -147,6 +147,10 @@ PY
 )"
   echo "  fault-and-tunnel model: $volumes"
   check "fault-and-tunnel model: 8 regions, each meshed with its volume" test "$volumes" = "8 regions, all meshed with their volumes"
+  # re-meshed, the tunnel's 16 facets become fewer chords: the program says which volumes changed
+  run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_remeshed.mesh"
+  check "fault-and-tunnel model re-meshed exits 0" test "$rc" -eq 0
+  check "re-meshed: the note names the tunnel whose volume changed" contains "$out" "note: re-meshing changed the volume of region 6 'tunnel_bottom' by -"
 else
   echo "SKIP: python3-gmsh is not installed (scripts/install_deps.sh --tests installs it)"
 fi
