@@ -647,6 +647,7 @@ int main(int argc, char** argv)
       std::cout << "sliver removal: tetrahedra with a dihedral angle under " << sr.sliver_bound << " degrees "
                 << sr.number_of_slivers_before << " -> " << sr.number_of_slivers_after << ", smallest dihedral "
                 << sr.min_dihedral_angle_before << " -> " << sr.min_dihedral_angle_after << " degrees ("
+                << sr.min_dihedral_angle_after_perturbation << " after the bubble moves; "
                 << sr.number_of_vertices_moved << " bubbles moved, "
                 << (sr.number_of_smoothing_passes ? std::to_string(sr.number_of_smoothing_moves) + " smoothing moves in " +
                                                       std::to_string(sr.number_of_smoothing_passes) + " passes (" +
