@@ -388,7 +388,7 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     std::vector<double> alpha = BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(!paper_ratio));
     // METHOD.md's formula as it stands (neighbours counted whatever their size), for issue 5's figure
     std::size_t paper_inside = 0;
-    for(double a : BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(false)))
+    for(double a : paper_ratio ? alpha : BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(false)))
       paper_inside += (a >= 10. && a <= 14.);
     const std::vector<double> alpha_of_bubble = alpha;
     std::sort(alpha.begin(), alpha.end());

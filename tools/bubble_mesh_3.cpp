@@ -579,7 +579,8 @@ int main(int argc, char** argv)
       });
       if(!changed.empty())
       {
-        std::cout << std::setprecision(3) << "note: re-meshing changed the volume of";
+        const std::streamsize precision = std::cout.precision(3);
+        std::cout << "note: re-meshing changed the volume of";
         for(std::size_t i = 0; i < changed.size() && i < 3; ++i)
           std::cout << (i ? "," : "") << " region " << changed[i].second << " '"
                     << model.region(changed[i].second).name << "' by " << std::showpos << 100. * changed[i].first
@@ -587,7 +588,8 @@ int main(int argc, char** argv)
         if(changed.size() > 3) std::cout << " and " << changed.size() - 3 << " more";
         std::cout << ": the new triangles cut across the bends of curved surfaces; a smaller --size "
                      "shrinks the change about in proportion, and without --remesh-surfaces the surfaces "
-                     "and volumes are kept exactly\n" << std::defaultfloat;
+                     "and volumes are kept exactly\n";
+        std::cout.precision(precision);
       }
     }
     if(report.thickness_rule_relaxed)
