@@ -151,6 +151,13 @@ PY
   run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_remeshed.mesh"
   check "fault-and-tunnel model re-meshed exits 0" test "$rc" -eq 0
   check "re-meshed: the note names the tunnel whose volume changed" contains "$out" "note: re-meshing changed the volume of region 6 'tunnel_bottom' by -"
+  # edges turning by half the default curvature angle follow the tunnel's bends closer: under 1 %
+  run "$tmp/tunnel.obj" --remesh-surfaces --curvature-angle 11.25 --population-rounds 0 --threads 2 -o "$tmp/tunnel_curved.mesh"
+  check "re-meshed with --curvature-angle 11.25 exits 0" test "$rc" -eq 0
+  check "--curvature-angle 11.25: no region's volume changes by over 1 %" test "$(grep -c 'changed the volume' <<<"$out")" -eq 0
+  run "$tmp/tunnel.obj" --curvature-angle 11.25
+  check "--curvature-angle without --remesh-surfaces exits 2" test "$rc" -eq 2
+  check "--curvature-angle without --remesh-surfaces says so" contains "$err" "--curvature-angle is a rule of --remesh-surfaces"
 else
   echo "SKIP: python3-gmsh is not installed (scripts/install_deps.sh --tests installs it)"
 fi

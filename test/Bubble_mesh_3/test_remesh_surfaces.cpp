@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -356,6 +357,112 @@ void test_proximity_inside_search_ball()
   assert(std::abs(at_tip - 0.25) < 1e-9);
 }
 
+// an output point of a patch near one of the patch's axis planes (an input
+// triangle with x, y or z constant, as box walls are) lies exactly on it;
+// returns how many points were so near
+std::size_t check_axis_planes_kept(const Model& input, const Model& output)
+{
+  std::vector<std::array<std::set<double>, 3> > levels(input.number_of_patches());
+  for(std::size_t t = 0; t < input.number_of_triangles(); ++t)
+  {
+    const auto& tri = input.triangle(t);
+    for(int k = 0; k < 3; ++k)
+      if(input.point(tri[0])[k] == input.point(tri[1])[k] && input.point(tri[0])[k] == input.point(tri[2])[k])
+        levels[input.patch_of_triangle(t)][k].insert(input.point(tri[0])[k]);
+  }
+  const double near = 1e-9 * diagonal(input);
+  std::size_t on_planes = 0;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+    for(std::size_t v : output.triangle(t))
+      for(int k = 0; k < 3; ++k)
+        for(double level : levels[output.patch_of_triangle(t)][k])
+        {
+          const double x = output.point(v)[k];
+          if(std::abs(x - level) > near) continue;
+          ++on_planes;
+          if(x != level)
+            std::cout << "    point " << v << " is " << x - level << " off the plane " << "xyz"[k] << " = " << level
+                      << std::endl;
+          assert(x == level);
+        }
+  return on_planes;
+}
+
+// The in-memory model moved to real coordinates (CloudSpin's corner, some
+// 1.6e6 m east): points projected onto its walls must still lie exactly on
+// them (CloudSpin re-meshed had wall points an ulp off, and its surface
+// recovery failed on such a wall)
+void test_far_from_origin()
+{
+  std::cout << "remesh_surfaces far from the origin\n";
+  const Model near = test_model();
+  Model input = near;
+  const Vector shift(1610685.000281947, -181489.13117834617, -7471.2849178777487);
+  for(std::size_t v = 0; v < input.number_of_points(); ++v) input.set_point(v, near.point(v) + shift);
+  Model output;
+  const auto np = BM::parameters::edge_length(0.5);
+  BM::remesh_surfaces(input, output, np);
+  BM::validate_geological_model(output);
+  const std::size_t on_planes = check_axis_planes_kept(input, output);
+  std::cout << "    " << on_planes << " point coordinates on the walls' planes, all exact" << std::endl;
+  assert(on_planes > 1000);
+}
+
+// A pipe of radius 1 through a box: a prism of 24 sides, each side 24 faces
+// of 0.25 along the axis (about its width: the rule reads the curvature from
+// an edge's length and its turn, which holds on even triangles). Each edge
+// along the axis turns by 15 degrees, under the feature angle. The rule
+// sizes the pipe's sides by the angle a new edge may turn, the walls not at all.
+void test_curvature_rule()
+{
+  std::cout << "curvature rule on a pipe\n";
+  const double pi = 3.14159265358979323846;
+  const int n = 24;
+  Builder b;
+  const std::size_t rock = b.model.add_region("rock"), pipe = b.model.add_region("pipe");
+  const std::size_t outer = b.model.add_patch("outer", 0, rock), sides = b.model.add_patch("pipe", rock, pipe);
+  for(int k = 0; k < 2; ++k)
+  {
+    const double x = 10. * k, sign = k == 0 ? -1. : 1.;
+    b.rectangle(outer, Point(x, 0, 0), Point(x, 10, 0), Point(x, 10, 10), Point(x, 0, 10), Vector(sign, 0, 0));
+    b.rectangle(outer, Point(0, x, 0), Point(10, x, 0), Point(10, x, 10), Point(0, x, 10), Vector(0, sign, 0));
+    b.rectangle(outer, Point(0, 0, x), Point(10, 0, x), Point(10, 10, x), Point(0, 10, x), Vector(0, 0, sign));
+  }
+  auto ring = [&](double x, int i) { return Point(x, 5 + std::cos(2 * pi * i / n), 5 + std::sin(2 * pi * i / n)); };
+  std::vector<Point> left, right;
+  for(int i = 0; i < n; ++i)
+  {
+    left.push_back(ring(2, i));
+    right.push_back(ring(8, i));
+    for(int k = 0; k < 24; ++k)
+    {
+      const double x0 = 2 + 0.25 * k, x1 = x0 + 0.25;
+      const Point mid = CGAL::midpoint(ring(x0, i), ring(x0, i + 1));
+      b.rectangle(sides, ring(x0, i), ring(x1, i), ring(x1, i + 1), ring(x0, i + 1), mid - Point(x0, 5, 5));
+    }
+  }
+  b.polygon(sides, left, Point(2, 5, 5), Vector(-1, 0, 0));
+  b.polygon(sides, right, Point(8, 5, 5), Vector(1, 0, 0));
+  const Model& m = b.model;
+  BM::validate_geological_model(m);
+  const BM::Model_features f = BM::detect_model_features(m);
+  auto field = [&](double angle) {
+    return BM::Remeshing_sizing_field<K>(
+      m, f, BM::parameters::curvature_angle(angle, BM::parameters::minimum_edge_length(0.05,
+            BM::parameters::elements_across_thickness(0., BM::parameters::edge_length(2.)))));
+  };
+  // at the midpoint of an edge along the axis: the angle over the turn (15 degrees) times the edge (0.25)
+  const Point on_edge = CGAL::midpoint(ring(5, 3), ring(5.25, 3));
+  const double by_default = field(22.5)(on_edge, sides), finer = field(11.25)(on_edge, sides), off = field(0.)(on_edge, sides);
+  const double on_wall = field(22.5)(Point(0, 9, 9), outer);
+  std::cout << "  pipe side: " << by_default << " (22.5 degrees), " << finer << " (11.25), " << off
+            << " (off); wall far from it " << on_wall << std::endl;
+  assert(std::abs(by_default - 22.5 / 15. * 0.25) < 1e-9);
+  assert(std::abs(finer - 11.25 / 15. * 0.25) < 1e-9);
+  assert(off == 2.);
+  assert(on_wall == 2.);
+}
+
 // `field` is the one remesh_surfaces() used (`given` plus the spacing of the curve points it had to keep)
 void check_remeshed(const Model& input, const Model& output, const BM::Surface_remeshing_report& r,
                     const BM::Remeshing_sizing_field<K>& field, const BM::Remeshing_sizing_field<K>& given,
@@ -379,6 +486,7 @@ void check_remeshed(const Model& input, const Model& output, const BM::Surface_r
   std::cout << "    largest relative volume error " << worst << "\n";
   assert(std::abs(worst - r.max_relative_volume_error) <= 1e-12 + 1e-9 * worst);
   if(strict_volumes) assert(worst < 1e-6);
+  check_axis_planes_kept(input, output);
   // points on the input surface
   std::cout << "    largest point distance to the input " << r.max_point_distance << " of the diagonal\n";
   assert(r.max_point_distance < 1e-12);
@@ -608,6 +716,8 @@ int main(int argc, char** argv)
   test_features();
   test_sizing();
   test_proximity_inside_search_ball();
+  test_curvature_rule();
+  test_far_from_origin();
   test_in_memory(BM::Surface_remeshing_method::BUBBLES);
   test_in_memory(BM::Surface_remeshing_method::ISOTROPIC);
   test_overhang();

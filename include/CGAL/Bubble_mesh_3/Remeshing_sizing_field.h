@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <cstddef>
 #include <iterator>
 #include <limits>
@@ -62,6 +63,14 @@ point of a patch. It is the smallest of
   curve that does not touch the curve (a fault tip near a horizon);
   \f$ h_{min} \f$ = `minimum_edge_length` keeps pinch-outs from demanding an
   endless refinement;
+- the curvature rule \f$ \max(h_{min}, \theta\, l / \varphi) \f$ at every
+  input edge inside a patch whose two triangles turn by an angle
+  \f$ \varphi \f$ under the feature angle (a larger turn is a curve): an
+  edge of length \f$ l \f$ turning by \f$ \varphi \f$ lies on a radius of
+  curvature of about \f$ l / \varphi \f$, and a new edge there turns by at
+  most \f$ \theta \f$ = `curvature_angle` (22.5 degrees: 16 edges around a
+  circle); without it a tunnel of radius 25 re-meshed at size 30 is a
+  hexagonal tube and loses several percent of its volume;
 - with `refine_ribbons`, the ribbon rule: on the two curves of a patch that
   meet at a corner under 10 degrees, the distance across to the other one
   where it is at least a twentieth of \f$ h_{min} \f$ (one edge across a
@@ -92,6 +101,8 @@ public:
   static constexpr double default_elements_across_thickness = 2.;
   /// default of the named parameter `size_grading`
   static constexpr double default_size_grading = 1.5;
+  /// default of the named parameter `curvature_angle`: 16 edges around a circle
+  static constexpr double default_curvature_angle = 22.5;
 
 private:
   typedef typename GeomTraits::Triangle_3 Triangle_3;
@@ -147,6 +158,12 @@ public:
       \cgalParamType{`double`}
       \cgalParamDefault{1.5}
     \cgalParamNEnd
+    \cgalParamNBegin{curvature_angle}
+      \cgalParamDescription{the largest turn, in degrees, of the input surface along one new edge (the
+        curvature rule); 0 turns the rule off}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`default_curvature_angle` (22.5)}
+    \cgalParamNEnd
     \cgalParamNBegin{refine_ribbons}
       \cgalParamDescription{applies the ribbon rule (needs `elements_across_thickness` > 0). modelA5's
         fault strip f3_1, 3 to 13 wide over 3 km with a floor of 37: re-meshed triangles under 25 degrees
@@ -194,12 +211,16 @@ public:
     minimum_size_ = choose_parameter(get_parameter(np, internal_np::minimum_edge_length), 0.1 * min_patch_size);
     grading_ = choose_parameter(get_parameter(np, internal_np::size_grading), default_size_grading);
     refine_ribbons_ = choose_parameter(get_parameter(np, internal_np::refine_ribbons), false);
+    const double curvature_angle =
+      choose_parameter(get_parameter(np, internal_np::curvature_angle), default_curvature_angle);
+    CGAL_precondition_msg(curvature_angle >= 0., "curvature_angle must not be negative");
     CGAL_precondition_msg(grading_ > 1., "size_grading must be above 1");
     // (0 would let a pinch-out or a ribbon's tip ask for edges down to nothing)
     CGAL_precondition_msg(minimum_size_ > 0., "minimum_edge_length must be positive");
     slope_ = grading_ - 1.;
 
     add_curve_grading_sources(model, features);
+    if(curvature_angle > 0.) add_curvature_sources(model, features, curvature_angle);
     if(elements_across_ > 0.)
     {
       add_thickness_sources(model, features);
@@ -316,6 +337,47 @@ private:
   static SPoint sp(const Point_3& p)
   {
     return SPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+
+  // The curvature rule at the midpoint of every input edge inside a patch
+  // (two triangles of the patch, turning by less than the feature angle).
+  void add_curvature_sources(const Geological_model_3<GeomTraits>& model, const Model_features& features,
+                             double curvature_angle)
+  {
+    const double pi = 3.14159265358979323846;
+    const double turn = curvature_angle * pi / 180., feature = features.feature_angle * pi / 180.;
+    struct Side { std::size_t a, b, triangle; };
+    std::vector<Side> sides;
+    sides.reserve(3 * model.number_of_triangles());
+    for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t p = model.triangle(t)[k], q = model.triangle(t)[(k + 1) % 3];
+        sides.push_back(Side{(std::min)(p, q), (std::max)(p, q), t});
+      }
+    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
+      return std::make_tuple(x.a, x.b, x.triangle) < std::make_tuple(y.a, y.b, y.triangle);
+    });
+    auto normal = [&](std::size_t t) {
+      const auto& tri = model.triangle(t);
+      const SPoint p = sp(model.point(tri[0]));
+      return CGAL::cross_product(sp(model.point(tri[1])) - p, sp(model.point(tri[2])) - p);
+    };
+    for(std::size_t first = 0, last = 0; first < sides.size(); first = last)
+    {
+      while(last < sides.size() && sides[last].a == sides[first].a && sides[last].b == sides[first].b) ++last;
+      if(last - first != 2) continue; // a border or a non-manifold edge
+      const std::size_t t1 = sides[first].triangle, t2 = sides[first + 1].triangle;
+      if(model.patch_of_triangle(t1) != model.patch_of_triangle(t2)) continue;
+      // a patch's triangles are oriented alike: the normals' angle is the turn
+      const auto n1 = normal(t1), n2 = normal(t2);
+      const double phi = std::atan2(std::sqrt(CGAL::cross_product(n1, n2).squared_length()), n1 * n2);
+      if(!(phi > 0.) || !(phi < feature)) continue;
+      const Point_3& a = model.point(sides[first].a);
+      const Point_3& b = model.point(sides[first].b);
+      add_source(CGAL::midpoint(a, b),
+                 (std::max)(minimum_size_, turn * std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))) / phi));
+    }
   }
 
   // Sample points of each patch, about half a patch size apart; thickness

@@ -32,8 +32,10 @@
 #include <cmath>
 #include <cstddef>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -167,6 +169,7 @@ public:
       for(std::size_t c : failed) cut_chart(c);
     }
     improve_patches();
+    snap_to_axis_planes();
     build_output(output);
     report_.time_patches = timer.time() - report_.time_curves;
   }
@@ -549,6 +552,46 @@ private:
       }
       flip_to_improve_angles(out_points_, patch_out_[p], out_curve_edges_, 30.);
     }
+  }
+
+  // A point projected onto an input triangle that lies in an axis plane (x,
+  // y or z constant: most box walls) lands on it only up to rounding. A wall
+  // whose points are an ulp off is no longer flat, and on the outer boundary
+  // no point beyond it makes its facets Delaunay from outside: CloudSpin
+  // re-meshed failed on one after 200 Steiner points on a triangle. Points of
+  // a patch within a few ulps of one of its axis planes get the plane's
+  // coordinate back.
+  void snap_to_axis_planes()
+  {
+    typedef typename GeomTraits::FT FT;
+    std::vector<std::array<std::set<FT>, 3> > levels(in_.number_of_patches());
+    for(std::size_t t = 0; t < in_.number_of_triangles(); ++t)
+    {
+      const auto& tri = in_.triangle(t);
+      for(int k = 0; k < 3; ++k)
+        if(in_.point(tri[0])[k] == in_.point(tri[1])[k] && in_.point(tri[0])[k] == in_.point(tri[2])[k])
+          levels[in_.patch_of_triangle(t)][k].insert(in_.point(tri[0])[k]);
+    }
+    const double diagonal = bbox_diagonal(in_);
+    for(std::size_t p = 0; p < patch_out_.size() && p < levels.size(); ++p)
+      for(int k = 0; k < 3; ++k)
+      {
+        if(levels[p][k].empty()) continue;
+        for(const Triangle& t : patch_out_[p])
+          for(std::size_t v : t)
+          {
+            const Point_3& q = out_points_[v];
+            std::array<FT, 3> c{{q.x(), q.y(), q.z()}};
+            // the nearest level: the first at or above, or the one below
+            auto it = levels[p][k].lower_bound(c[k]);
+            if(it == levels[p][k].end() || (it != levels[p][k].begin() && c[k] - *std::prev(it) < *it - c[k])) --it;
+            const double level = CGAL::to_double(*it);
+            const double tolerance = 16. * std::numeric_limits<double>::epsilon() * (std::abs(level) + diagonal);
+            if(c[k] == *it || !(std::abs(CGAL::to_double(c[k]) - level) <= tolerance)) continue;
+            c[k] = *it;
+            out_points_[v] = Point_3(c[0], c[1], c[2]);
+          }
+      }
   }
 
   void build_output(Model& output)

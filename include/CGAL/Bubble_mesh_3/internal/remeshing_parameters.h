@@ -46,6 +46,7 @@ enum elements_across_thickness_t { elements_across_thickness };
 enum minimum_edge_length_t { minimum_edge_length };
 enum size_grading_t { size_grading };
 enum refine_ribbons_t { refine_ribbons };
+enum curvature_angle_t { curvature_angle };
 enum curve_distance_t { curve_distance };
 enum surface_distance_t { surface_distance };
 enum chart_angle_t { chart_angle };
@@ -92,6 +93,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, minimum_edge_length)
 /// largest ratio between the sizes of neighbouring edges (default 1.5): the
 /// size grows by at most `size_grading - 1` per unit of distance
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, size_grading)
+/// \ingroup PkgBubbleMesh3Ref
+/// largest turn, in degrees, of the input surface along one re-meshed edge
+/// where a patch is curved (default 22.5: 16 edges around a circle; 0: off)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, curvature_angle)
 /// \ingroup PkgBubbleMesh3Ref
 /// sizes a ribbon (a patch between two curves that meet at a corner under 10
 /// degrees, such as a fault strip between two horizon cut lines) by its width,
