@@ -29,7 +29,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <tuple>
 #include <cstddef>
 #include <iterator>
 #include <limits>
@@ -346,38 +345,31 @@ private:
   {
     const double pi = 3.14159265358979323846;
     const double turn = curvature_angle * pi / 180., feature = features.feature_angle * pi / 180.;
-    struct Side { std::size_t a, b, triangle; };
-    std::vector<Side> sides;
-    sides.reserve(3 * model.number_of_triangles());
-    for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::size_t p = model.triangle(t)[k], q = model.triangle(t)[(k + 1) % 3];
-        sides.push_back(Side{(std::min)(p, q), (std::max)(p, q), t});
-      }
-    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-      return std::make_tuple(x.a, x.b, x.triangle) < std::make_tuple(y.a, y.b, y.triangle);
-    });
+    const internal::Edge_triangles_map et = internal::edge_triangles(model);
     auto normal = [&](std::size_t t) {
       const auto& tri = model.triangle(t);
       const SPoint p = sp(model.point(tri[0]));
       return CGAL::cross_product(sp(model.point(tri[1])) - p, sp(model.point(tri[2])) - p);
     };
-    for(std::size_t first = 0, last = 0; first < sides.size(); first = last)
-    {
-      while(last < sides.size() && sides[last].a == sides[first].a && sides[last].b == sides[first].b) ++last;
-      if(last - first != 2) continue; // a border or a non-manifold edge
-      const std::size_t t1 = sides[first].triangle, t2 = sides[first + 1].triangle;
-      if(model.patch_of_triangle(t1) != model.patch_of_triangle(t2)) continue;
-      // a patch's triangles are oriented alike: the normals' angle is the turn
-      const auto n1 = normal(t1), n2 = normal(t2);
-      const double phi = std::atan2(std::sqrt(CGAL::cross_product(n1, n2).squared_length()), n1 * n2);
-      if(!(phi > 0.) || !(phi < feature)) continue;
-      const Point_3& a = model.point(sides[first].a);
-      const Point_3& b = model.point(sides[first].b);
-      add_source(CGAL::midpoint(a, b),
-                 (std::max)(minimum_size_, turn * std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))) / phi));
-    }
+    // each edge once, from its first triangle, in triangle order
+    for(std::size_t t1 = 0; t1 < model.number_of_triangles(); ++t1)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t a = model.triangle(t1)[k], b = model.triangle(t1)[(k + 1) % 3];
+        const std::vector<std::size_t>& ts = et.at(internal::edge_key(a, b));
+        if(ts.size() != 2) continue; // a border or a non-manifold edge
+        const std::size_t t2 = ts[0] == t1 ? ts[1] : ts[0];
+        if(t2 < t1 || model.patch_of_triangle(t1) != model.patch_of_triangle(t2)) continue;
+        // a patch's triangles are oriented alike: the normals' angle is the turn
+        // (atan2 rather than acos: exact for the small turns of smooth surfaces)
+        const auto n1 = normal(t1), n2 = normal(t2);
+        const double phi = std::atan2(std::sqrt(CGAL::cross_product(n1, n2).squared_length()), n1 * n2);
+        if(!(phi > 0.) || !(phi < feature)) continue;
+        const Point_3& p = model.point(a);
+        const Point_3& q = model.point(b);
+        add_source(CGAL::midpoint(p, q),
+                   (std::max)(minimum_size_, turn * std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))) / phi));
+      }
   }
 
   // Sample points of each patch, about half a patch size apart; thickness
