@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <memory>
+#include <set>
 
 #include <cmath>
 #include <cstdio>
@@ -39,6 +40,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace BM = CGAL::Bubble_mesh_3;
@@ -155,6 +157,18 @@ const char* usage_text =
 "                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
 "                             30-40 % on the models tried, for an aspect-ratio median up\n"
 "                             to 0.02 higher; 0 keeps the crowded initial bubbles (poor)\n"
+"  --region-size-factor R=F   sizes in region R (its name, or its number as --check lists\n"
+"                             it) times F, from 0.05 to 20 (0.5: edges half as long, about\n"
+"                             8 times the tetrahedra there); may be given for several\n"
+"                             regions. With --remesh-surfaces the region's surfaces are\n"
+"                             re-meshed at that size (a surface between two regions takes\n"
+"                             the smaller) and its inside follows them; with the surfaces\n"
+"                             kept only the bubbles inside it get smaller (its surfaces\n"
+"                             stay as given: the tetrahedra against them are graded)\n"
+"  --surface-size-factor S=F  with --remesh-surfaces: the target size on surface S times F\n"
+"                             (a surface's name takes all its parts, NAME_1, NAME_2...; a\n"
+"                             part's own name takes that part); where a thin layer or a\n"
+"                             bend asks for smaller edges, they stay smaller\n"
 "  --regions FILE             for a .ts input of open surfaces (horizons, faults, box\n"
 "                             walls): the regions on either side of each TSurf object,\n"
 "                             one line 'OBJECT POSITIVE_REGION NEGATIVE_REGION' each\n"
@@ -210,6 +224,9 @@ struct Options
   double curvature_angle = BM::Remeshing_sizing_field<K>::default_curvature_angle;
   bool curvature_angle_given = false;
   bool refine_ribbons = false;
+  // --region-size-factor and --surface-size-factor as given: name or number, factor
+  std::vector<std::pair<std::string, double> > region_size_factors;
+  std::vector<std::pair<std::string, double> > surface_size_factors;
 };
 
 bool is_gocad_model3d(const std::string& f) { return BM::IO::internal::file_extension(f) == "ml"; }
@@ -238,6 +255,17 @@ std::size_t parse_count(const std::string& opt, const std::string& s, const std:
   if(!(n >= 0.) || n != std::floor(n) || n > most)
     usage_error(opt + " takes a number of " + what + " from 0 to " + std::to_string(long(most)) + ", got '" + s + "'");
   return std::size_t(n);
+}
+
+// NAME=F of --region-size-factor and --surface-size-factor (the name may hold '=': split at the last)
+std::pair<std::string, double> parse_name_factor(const std::string& opt, const std::string& s)
+{
+  const std::size_t eq = s.rfind('=');
+  if(eq == std::string::npos || eq == 0 || eq + 1 == s.size())
+    usage_error(opt + " takes NAME=FACTOR (e.g. 'Slide_mass=0.5'), got '" + s + "'");
+  const double f = parse_double(opt, s.substr(eq + 1));
+  if(!(f >= 0.05 && f <= 20.)) usage_error(opt + " takes a factor from 0.05 to 20, got '" + s.substr(eq + 1) + "'");
+  return std::make_pair(s.substr(0, eq), f);
 }
 
 Options parse_options(int argc, char** argv)
@@ -307,6 +335,8 @@ Options parse_options(int argc, char** argv)
       o.layer_elements_given = true;
     }
     else if(a == "--refine-ribbons") o.refine_ribbons = true;
+    else if(a == "--region-size-factor") o.region_size_factors.push_back(parse_name_factor(a, value(a)));
+    else if(a == "--surface-size-factor") o.surface_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--population-rounds") o.population_rounds = parse_count(a, value(a), "rounds", 1000.);
     else if(a == "--size-grading")
     {
@@ -342,6 +372,9 @@ Options parse_options(int argc, char** argv)
     usage_error("--curvature-angle is a rule of --remesh-surfaces: give both");
   if(o.refine_ribbons && !o.remesh_surfaces)
     usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
+  if(!o.surface_size_factors.empty() && !o.remesh_surfaces)
+    usage_error("--surface-size-factor sizes the re-meshed surfaces: give --remesh-surfaces too (without it the "
+                "input surfaces are kept as they are)");
   if(!o.refine_tilted_pieces && (o.remesh_surfaces || o.keep_input_triangles))
     usage_error("--axis-planes-only chooses which planar pieces get new points: it does nothing with " +
                 std::string(o.remesh_surfaces ? "--remesh-surfaces" : "--keep-input-triangles"));
@@ -365,6 +398,90 @@ Options parse_options(int argc, char** argv)
     catch(const std::exception& e) { usage_error(e.what()); }
   }
   return o;
+}
+
+// The factors of --region-size-factor by region (entry 0, the outside, unused) and
+// of --surface-size-factor by patch; empty when none was given. A name that
+// matches nothing is a usage error that lists what the model has.
+std::vector<double> factors_by_region(const BM::Geological_model_3<K>& model, const Options& o, std::ostream& log)
+{
+  std::vector<double> f;
+  if(o.region_size_factors.empty()) return f;
+  f.assign(model.number_of_regions() + 1, 1.);
+  for(const auto& given : o.region_size_factors)
+  {
+    std::size_t matched = 0;
+    for(std::size_t r = 1; r <= model.number_of_regions(); ++r)
+      if(model.region(r).name == given.first || std::to_string(r) == given.first)
+      {
+        f[r] = given.second;
+        ++matched;
+        log << "size factor " << given.second << " in region " << r << " '" << model.region(r).name << "'\n";
+        // kept surfaces do not grow with the bubbles (bundled model, region 5 at 2: aspect-ratio
+        // median 1.98 -> 3.51 there)
+        if(given.second > 1. && !o.remesh_surfaces)
+          log << "note: with the surfaces kept, the triangles around region " << r
+              << " stay as they are and only its bubbles grow: the tetrahedra between them get poor; "
+                 "--remesh-surfaces makes its surfaces coarser too\n";
+      }
+    if(matched == 0)
+    {
+      std::string names;
+      for(std::size_t r = 1; r <= model.number_of_regions() && r <= 30; ++r)
+        names += (r == 1 ? "" : ", ") + std::to_string(r) + " '" + model.region(r).name + "'";
+      usage_error("--region-size-factor: " + o.input + " has no region '" + given.first + "'; its regions are " +
+                  names + (model.number_of_regions() > 30 ? ", ..." : ""));
+    }
+  }
+  return f;
+}
+
+// a patch belongs to surface NAME when it is named NAME, or NAME_k (one part of a surface)
+bool is_part_of(const std::string& patch, const std::string& surface)
+{
+  if(patch == surface) return true;
+  if(patch.size() <= surface.size() + 1 || patch.compare(0, surface.size(), surface) != 0 || patch[surface.size()] != '_')
+    return false;
+  return patch.find_first_not_of("0123456789", surface.size() + 1) == std::string::npos;
+}
+
+std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, const Options& o, std::ostream& log)
+{
+  std::vector<double> f;
+  if(o.surface_size_factors.empty()) return f;
+  f.assign(model.number_of_patches(), 1.);
+  for(const auto& given : o.surface_size_factors)
+  {
+    std::size_t matched = 0;
+    for(std::size_t p = 0; p < model.number_of_patches(); ++p)
+      if(is_part_of(model.patch(p).name, given.first))
+      {
+        f[p] = given.second;
+        ++matched;
+      }
+    if(matched == 0)
+    {
+      // the surfaces' names, parts folded: 'F1_1', 'F1_2' are 'F1'
+      std::set<std::string> surfaces;
+      for(const auto& patch : model.patches())
+      {
+        std::string n = patch.name;
+        const std::size_t u = n.rfind('_');
+        if(u != std::string::npos && u + 1 < n.size() && n.find_first_not_of("0123456789", u + 1) == std::string::npos)
+          n.resize(u);
+        surfaces.insert(n);
+      }
+      std::string names;
+      std::size_t k = 0;
+      for(const std::string& n : surfaces)
+        if(k++ < 30) names += (k == 1 ? "'" : ", '") + n + "'";
+      usage_error("--surface-size-factor: " + o.input + " has no surface '" + given.first + "'; its surfaces are " +
+                  names + (surfaces.size() > 30 ? ", ..." : ""));
+    }
+    log << "size factor " << given.second << " on surface '" << given.first << "' (" << matched
+        << (matched == 1 ? " patch" : " patches") << ")\n";
+  }
+  return f;
 }
 
 } // namespace
@@ -448,6 +565,11 @@ int main(int argc, char** argv)
     std::cerr << "bubble_mesh_3: error: " << e.what() << "\n";
     return 1;
   }
+  // names checked before --check returns, so that a check also checks them
+  std::ostringstream factor_log;
+  const std::vector<double> region_factors = factors_by_region(model, opt, factor_log);
+  const std::vector<double> patch_factors = factors_by_patch(model, opt, factor_log);
+  if(!opt.quiet) std::cout << factor_log.str();
   if(opt.check) return 0;
 
   // the section's plane, checked against the model before the (long) meshing
@@ -515,9 +637,14 @@ int main(int argc, char** argv)
                     BM::parameters::size_grading(opt.size_grading,
                     BM::parameters::curvature_angle(opt.curvature_angle,
                     BM::parameters::refine_ribbons(opt.refine_ribbons,
+                    // re-meshed, a region's factor sizes its surfaces and its inside follows
+                    // them; kept, it scales the bubbles inside it only
+                    BM::parameters::region_size_factors(opt.remesh_surfaces ? region_factors : std::vector<double>(),
+                    BM::parameters::region_scale_factors(opt.remesh_surfaces ? std::vector<double>() : region_factors,
+                    BM::parameters::patch_size_factors(patch_factors,
                     BM::parameters::number_of_population_rounds(opt.population_rounds,
                     BM::parameters::solid_angle_overlap_ratio(!opt.paper_overlap_ratio,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

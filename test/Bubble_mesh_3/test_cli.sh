@@ -148,9 +148,44 @@ PY
   echo "  fault-and-tunnel model: $volumes"
   check "fault-and-tunnel model: 8 regions, each meshed with its volume" test "$volumes" = "8 regions, all meshed with their volumes"
   # re-meshed, the tunnel's 16 facets become fewer chords: the program says which volumes changed
-  run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_remeshed.mesh"
+  run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_remeshed.mesh" \
+      --quality-json "$tmp/tunnel_remeshed_q.json"
   check "fault-and-tunnel model re-meshed exits 0" test "$rc" -eq 0
   check "re-meshed: the note names the tunnel whose volume changed" contains "$out" "note: re-meshing changed the volume of region 6 'tunnel_bottom' by -"
+  # a region and a surface asked finer: more tetrahedra in the region (4.6 times with population
+  # control, 2.3 without), more triangles on foot_2's outer walls (4.0 times; a surface whose
+  # sizes the thin-layer rule sets, as the small fault's, gains only where the target binds)
+  run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_factors.mesh" \
+      --quality-json "$tmp/tunnel_factors_q.json" --region-size-factor foot_0=0.5 --surface-size-factor foot_2/outside=0.5
+  check "re-meshed with size factors exits 0" test "$rc" -eq 0
+  check "size factors are listed" contains "$out" "size factor 0.5 in region 1 'foot_0'"
+  check "region foot_0 at 0.5: over 1.5 times the tetrahedra, the other regions' volumes unchanged; foot_2/outside at 0.5: over twice the triangles" \
+    /usr/bin/python3 - "$tmp/tunnel_remeshed_q.json" "$tmp/tunnel_factors_q.json" "$tmp/tunnel_remeshed.mesh" "$tmp/tunnel_factors.mesh" <<'PY'
+import json, re, sys
+a = {r["name"]: r for r in json.load(open(sys.argv[1]))["regions"]}
+b = {r["name"]: r for r in json.load(open(sys.argv[2]))["regions"]}
+assert b["foot_0"]["tetrahedra"] > 1.5 * a["foot_0"]["tetrahedra"], (a["foot_0"]["tetrahedra"], b["foot_0"]["tetrahedra"])
+for n in a: assert abs(a[n]["volume"] - b[n]["volume"]) <= 1e-9 * a[n]["volume"], n
+def wall_triangles(mesh):
+    text = open(mesh).read()
+    ref = re.search(r'# patch \d+ ref (\d+) "foot_2/outside"', text).group(1)
+    block = text.split("\nTriangles\n", 1)[1].split("\n")
+    n = int(block[0])
+    return sum(1 for line in block[1:n + 1] if line.split()[3] == ref)
+fa, fb = wall_triangles(sys.argv[3]), wall_triangles(sys.argv[4])
+print("  foot_0: %d -> %d tetrahedra; foot_2/outside: %d -> %d triangles" % (a["foot_0"]["tetrahedra"], b["foot_0"]["tetrahedra"], fa, fb))
+assert fb > 2 * fa, (fa, fb)
+PY
+  run "$tmp/tunnel.obj" --check --region-size-factor granite=0.5
+  check "--region-size-factor naming no region exits 2" test "$rc" -eq 2
+  check "--region-size-factor naming no region lists the regions" contains "$err" "has no region 'granite'; its regions are 1 'foot_0', 2 'hang_0'"
+  run "$tmp/tunnel.obj" --check --remesh-surfaces --surface-size-factor granite=0.5
+  check "--surface-size-factor naming no surface exits 2" test "$rc" -eq 2
+  check "--surface-size-factor naming no surface lists the surfaces" contains "$err" "has no surface 'granite'; its surfaces are"
+  run "$tmp/tunnel.obj" --surface-size-factor small_fault=0.5
+  check "--surface-size-factor without --remesh-surfaces exits 2" test "$rc" -eq 2
+  run "$tmp/tunnel.obj" --region-size-factor foot_0=0
+  check "--region-size-factor 0 exits 2 with the range" contains "$err" "takes a factor from 0.05 to 20"
   # edges turning by half the default curvature angle follow the tunnel's bends closer: under 1 %
   run "$tmp/tunnel.obj" --remesh-surfaces --curvature-angle 11.25 --population-rounds 0 --threads 2 -o "$tmp/tunnel_curved.mesh"
   check "re-meshed with --curvature-angle 11.25 exits 0" test "$rc" -eq 0
@@ -619,6 +654,19 @@ assert a['dihedral_angle']['min'] >= b['dihedral_angle']['min'], (a['dihedral_an
 sa=a['smallest_dihedral_angle']; sb=b['smallest_dihedral_angle']
 assert sa['share_under_15'] * a['tetrahedra'] < sb['share_under_15'] * b['tetrahedra'], (sa, sb)
 assert abs(a['volume'] - b['volume']) <= 1e-9 * b['volume']
+"
+  fi
+  # a region asked finer with the surfaces kept: its bubbles only get smaller
+  run "$model" -q --region-size-factor Layer_1_footwall=0.5 --region-size-factor 5=2 --quality-json "$tmp/q_factors.json"
+  check "--region-size-factor with the surfaces kept exits 0" test "$rc" -eq 0
+  if command -v python3 >/dev/null; then
+    check "--region-size-factor: region 1 at 0.5 over twice the tetrahedra, region 5 at 2 fewer, volumes the same" python3 -c "
+import json
+a={r['name']: r for r in json.load(open('$tmp/q.json'))['regions']}
+b={r['name']: r for r in json.load(open('$tmp/q_factors.json'))['regions']}
+assert b['Layer_1_footwall']['tetrahedra'] > 2 * a['Layer_1_footwall']['tetrahedra'], (a['Layer_1_footwall'], b['Layer_1_footwall'])
+assert b['Layer_4_footwall']['tetrahedra'] < a['Layer_4_footwall']['tetrahedra']
+for n in a: assert abs(a[n]['volume'] - b[n]['volume']) <= 1e-9 * a[n]['volume'], n
 "
   fi
   # Steiner points of the recovery: collapsed by default, kept on request;
