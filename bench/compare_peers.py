@@ -505,7 +505,7 @@ def main():
     p.add_argument("--build-dir", default=os.path.join(REPO, "build-bench"),
                    help="CMake build folder with the programs (default: %(default)s)")
     p.add_argument("--out", default=None, help="output folder (default: BUILD_DIR/compare_peers)")
-    p.add_argument("--timeout", type=float, default=150.0, help="time limit per run in seconds (default: %(default)s)")
+    p.add_argument("--timeout", type=float, default=200.0, help="time limit per run in seconds (default: %(default)s)")
     p.add_argument("--bubble-timeout", type=float, default=None,
                    help="time limit per bubble_mesh_3 run in seconds (default: --timeout)")
     p.add_argument("--remesh-timeout", type=float, default=None,

@@ -29,8 +29,8 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <map>
 #include <memory>
-#include <set>
 
 #include <cmath>
 #include <cstdio>
@@ -158,17 +158,18 @@ const char* usage_text =
 "                             30-40 % on the models tried, for an aspect-ratio median up\n"
 "                             to 0.02 higher; 0 keeps the crowded initial bubbles (poor)\n"
 "  --region-size-factor R=F   sizes in region R (its name, or its number as --check lists\n"
-"                             it) times F, from 0.05 to 20 (0.5: edges half as long, about\n"
-"                             8 times the tetrahedra there); may be given for several\n"
+"                             it) times F, from 0.05 to 20 (0.5: edges half as long, 4 to 5\n"
+"                             times the tetrahedra there); may be given for several\n"
 "                             regions. With --remesh-surfaces the region's surfaces are\n"
 "                             re-meshed at that size (a surface between two regions takes\n"
 "                             the smaller) and its inside follows them; with the surfaces\n"
 "                             kept only the bubbles inside it get smaller (its surfaces\n"
 "                             stay as given: the tetrahedra against them are graded)\n"
 "  --surface-size-factor S=F  with --remesh-surfaces: the target size on surface S times F\n"
-"                             (a surface's name takes all its parts, NAME_1, NAME_2...; a\n"
-"                             part's own name takes that part); where a thin layer or a\n"
-"                             bend asks for smaller edges, they stay smaller\n"
+"                             (a surface's name, as --check lists them, takes all its parts\n"
+"                             NAME_1, NAME_2...; a part's own name takes that part); where\n"
+"                             a thin layer or a bend asks for smaller edges, they stay\n"
+"                             smaller\n"
 "  --regions FILE             for a .ts input of open surfaces (horizons, faults, box\n"
 "                             walls): the regions on either side of each TSurf object,\n"
 "                             one line 'OBJECT POSITIVE_REGION NEGATIVE_REGION' each\n"
@@ -445,6 +446,36 @@ bool is_part_of(const std::string& patch, const std::string& surface)
   return patch.find_first_not_of("0123456789", surface.size() + 1) == std::string::npos;
 }
 
+// the surfaces' names with their numbers of parts: 'F1_1', 'F1_2' are 'F1' (2 parts)
+std::map<std::string, std::size_t> surface_names(const BM::Geological_model_3<K>& model)
+{
+  std::map<std::string, std::size_t> surfaces;
+  for(const auto& patch : model.patches())
+  {
+    std::string n = patch.name;
+    const std::size_t u = n.rfind('_');
+    if(u != std::string::npos && u > 0 && u + 1 < n.size() &&
+       n.find_first_not_of("0123456789", u + 1) == std::string::npos)
+      n.resize(u);
+    ++surfaces[n];
+  }
+  return surfaces;
+}
+
+// 'A', 'B' (3 parts), ... : at most `most` names
+std::string list_surfaces(const std::map<std::string, std::size_t>& surfaces, std::size_t most)
+{
+  std::string names;
+  std::size_t k = 0;
+  for(const auto& s : surfaces)
+  {
+    if(k++ == most) return names + ", ...";
+    names += (k == 1 ? "'" : ", '") + s.first + "'" +
+             (s.second > 1 ? " (" + std::to_string(s.second) + " parts)" : std::string());
+  }
+  return names;
+}
+
 std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, const Options& o, std::ostream& log)
 {
   std::vector<double> f;
@@ -460,24 +491,8 @@ std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, con
         ++matched;
       }
     if(matched == 0)
-    {
-      // the surfaces' names, parts folded: 'F1_1', 'F1_2' are 'F1'
-      std::set<std::string> surfaces;
-      for(const auto& patch : model.patches())
-      {
-        std::string n = patch.name;
-        const std::size_t u = n.rfind('_');
-        if(u != std::string::npos && u + 1 < n.size() && n.find_first_not_of("0123456789", u + 1) == std::string::npos)
-          n.resize(u);
-        surfaces.insert(n);
-      }
-      std::string names;
-      std::size_t k = 0;
-      for(const std::string& n : surfaces)
-        if(k++ < 30) names += (k == 1 ? "'" : ", '") + n + "'";
       usage_error("--surface-size-factor: " + o.input + " has no surface '" + given.first + "'; its surfaces are " +
-                  names + (surfaces.size() > 30 ? ", ..." : ""));
-    }
+                  list_surfaces(surface_names(model), 30));
     log << "size factor " << given.second << " on surface '" << given.first << "' (" << matched
         << (matched == 1 ? " patch" : " patches") << ")\n";
   }
@@ -570,6 +585,8 @@ int main(int argc, char** argv)
   const std::vector<double> region_factors = factors_by_region(model, opt, factor_log);
   const std::vector<double> patch_factors = factors_by_patch(model, opt, factor_log);
   if(!opt.quiet) std::cout << factor_log.str();
+  if(opt.check && !opt.quiet)
+    std::cout << "surfaces (the names --surface-size-factor takes): " << list_surfaces(surface_names(model), 200) << "\n";
   if(opt.check) return 0;
 
   // the section's plane, checked against the model before the (long) meshing

@@ -135,6 +135,8 @@ if /usr/bin/python3 -c "import gmsh" 2>/dev/null; then
   run "$tmp/tunnel.obj" --check --summary-json "$tmp/tunnel_summary.json"
   check "fault-and-tunnel model: --check exits 0" test "$rc" -eq 0
   check "fault-and-tunnel model: the small fault lies inside foot_1" contains "$out" "'small_fault' in region 3 'foot_1'"
+  check "--check lists the surfaces' names, parts folded" \
+    contains "$out" "surfaces (the names --surface-size-factor takes): 'foot_0/foot', 'foot_0/hang' (2 parts), "
   run "$tmp/tunnel.obj" --threads 2 -o "$tmp/tunnel.mesh" --quality-json "$tmp/tunnel_quality.json"
   check "fault-and-tunnel model meshes" test "$rc" -eq 0
   volumes="$(/usr/bin/python3 - "$tmp/tunnel_summary.json" "$tmp/tunnel_quality.json" <<'PY'
