@@ -129,7 +129,8 @@ const char* usage_text =
 "                             input edge length. Thin layers get finer (see below). With\n"
 "                             the surfaces kept, a size above the median keeps the box\n"
 "                             walls coarse where a small, finely triangulated body (an\n"
-"                             ore lens, a tunnel) makes the median small\n"
+"                             ore lens, a tunnel) makes the median small. Re-meshed, a\n"
+"                             size whose mesh cannot fit in memory is refused at once\n"
 "  --layer-elements N         with --remesh-surfaces: edges wanted across the thickness\n"
 "                             of a thin layer, or between a fault tip and a horizon\n"
 "                             (default 2; 1 halves the sizes there, fewer tetrahedra and\n"
@@ -499,6 +500,43 @@ std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, con
   return f;
 }
 
+// Re-meshed, the mesh has at least about V / (0.118 h^3) tetrahedra for a region
+// of volume V at size h (regular ones of edge h fill it; a uniform packing gives
+// about as many), several times more where thin layers and small features make
+// the sizes smaller (14-16 times at the default size of the bundled model and
+// modelA2), about 0.5 KB each at the peak. A size far too small for the model (a
+// typo, a size in the wrong unit) would run for hours and then be killed:
+// refuse when even the bound does not fit in the machine's memory, warn when a
+// quarter of it does not.
+void check_remeshed_size(const BM::Geological_model_summary& summary, const Options& o,
+                         const std::vector<double>& region_factors)
+{
+  const CGAL::Bbox_3& b = summary.bbox;
+  const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                                    CGAL::square(b.zmax() - b.zmin()));
+  const double h = o.size > 0. ? o.size : o.relative_size > 0. ? o.relative_size * diagonal : summary.median_edge_length;
+  if(!(h > 0.) || !(diagonal > 0.)) return;
+  double at_least = 0.;
+  for(const auto& r : summary.regions)
+  {
+    const double f = r.index < region_factors.size() ? region_factors[r.index] : 1.;
+    at_least += std::abs(r.volume) / (0.1179 * CGAL::square(f * h) * (f * h));
+  }
+  const double bytes_per_tet = 500.;
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  if(pages <= 0 || page <= 0) return;
+  const double memory = double(pages) * double(page);
+  std::ostringstream what;
+  what << std::setprecision(3) << "a re-meshing size of " << h << " (" << 100. * h / diagonal
+       << " % of the model's diagonal" << (o.size > 0. || o.relative_size > 0. ? "" : ", the median input edge")
+       << ") asks for at least " << at_least / 1e6 << " million tetrahedra (about " << at_least * bytes_per_tet / 1e9
+       << " GB; thin layers make it several times more), and this machine has " << memory / 1e9 << " GB";
+  if(at_least * bytes_per_tet > memory)
+    usage_error(what.str() + ": give a larger --size (in model units, or e.g. --size 2% of the diagonal)");
+  if(4. * at_least * bytes_per_tet > memory && !o.quiet)
+    std::cout << "warning: " << what.str() << ": the run may not fit in memory; a larger --size makes it smaller\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -588,6 +626,7 @@ int main(int argc, char** argv)
   if(opt.check && !opt.quiet)
     std::cout << "surfaces (the names --surface-size-factor takes): " << list_surfaces(surface_names(model), 200) << "\n";
   if(opt.check) return 0;
+  if(opt.remesh_surfaces) check_remeshed_size(summary, opt, region_factors);
 
   // the section's plane, checked against the model before the (long) meshing
   K::Plane_3 cut_plane;

@@ -109,6 +109,13 @@ run "$tmp/lens.obj" --size 0.3 --keep-input-triangles -o "$tmp/lens_kept.mesh"
 check "--size with --keep-input-triangles exits 2" test "$rc" -eq 2
 check "--size with --keep-input-triangles says why" contains "$err" "it does nothing with --keep-input-triangles"
 check "no output after a usage error" test ! -e "$tmp/lens_kept.mesh"
+# a re-meshing size in the wrong unit (0.001 for a model 1 km wide): refused before any work,
+# not hours of meshing and an out-of-memory kill
+run "$model" --remesh-surfaces --size 0.001 -o "$tmp/tiny.mesh"
+check "a re-meshing size far too small exits 2" test "$rc" -eq 2
+check "a re-meshing size far too small: the message gives the count and asks for a larger --size" \
+  contains "$err" "million tetrahedra (about"
+check "a re-meshing size far too small: no output" test ! -e "$tmp/tiny.mesh"
 
 # a layer pinching out at 1.72 degrees and a fault ending inside the body below, as Gmsh
 # meshes them: re-meshed with the thickness rule, the surfaces crowd the pinch-out and the
