@@ -500,15 +500,16 @@ std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, con
   return f;
 }
 
-// Re-meshed, the mesh has at least about V / (0.118 h^3) tetrahedra for a region
-// of volume V at size h (regular ones of edge h fill it; a uniform packing gives
+// The mesh has at least about V / (0.118 h^3) tetrahedra for a region of volume V
+// at size h (re-meshed, the re-meshing size; kept, the region's median edge; times
+// its --region-size-factor) (regular ones of edge h fill it; a uniform packing gives
 // about as many), several times more where thin layers and small features make
 // the sizes smaller (14-16 times at the default size of the bundled model and
 // modelA2), about 0.5 KB each at the peak. A size far too small for the model (a
 // typo, a size in the wrong unit) would run for hours and then be killed:
 // refuse when even the bound does not fit in the machine's memory, warn when a
 // quarter of it does not.
-void check_remeshed_size(const BM::Geological_model_summary& summary, const Options& o,
+void check_mesh_size(const BM::Geological_model_summary& summary, const Options& o,
                          const std::vector<double>& region_factors)
 {
   const CGAL::Bbox_3& b = summary.bbox;
@@ -519,22 +520,30 @@ void check_remeshed_size(const BM::Geological_model_summary& summary, const Opti
   double at_least = 0.;
   for(const auto& r : summary.regions)
   {
+    // kept surfaces: the bubbles inside follow the region's own edges
     const double f = r.index < region_factors.size() ? region_factors[r.index] : 1.;
-    at_least += std::abs(r.volume) / (0.1179 * CGAL::square(f * h) * (f * h));
+    const double hr = f * (o.remesh_surfaces ? h : r.median_edge_length);
+    if(hr > 0.) at_least += std::abs(r.volume) / (0.1179 * CGAL::square(hr) * hr);
   }
   const double bytes_per_tet = 500.;
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
   if(pages <= 0 || page <= 0) return;
   const double memory = double(pages) * double(page);
   std::ostringstream what;
-  what << std::setprecision(3) << "a re-meshing size of " << h << " (" << 100. * h / diagonal
-       << " % of the model's diagonal" << (o.size > 0. || o.relative_size > 0. ? "" : ", the median input edge")
-       << ") asks for at least " << at_least / 1e6 << " million tetrahedra (about " << at_least * bytes_per_tet / 1e9
+  what << std::setprecision(3);
+  if(o.remesh_surfaces)
+    what << "a re-meshing size of " << h << " (" << 100. * h / diagonal << " % of the model's diagonal"
+         << (o.size > 0. || o.relative_size > 0. ? "" : ", the median input edge") << ")";
+  else
+    what << "--region-size-factor";
+  what << (region_factors.empty() ? "" : o.remesh_surfaces ? " with --region-size-factor" : "") << " asks for at least " << at_least / 1e6 << " million tetrahedra (about " << at_least * bytes_per_tet / 1e9
        << " GB; thin layers make it several times more), and this machine has " << memory / 1e9 << " GB";
   if(at_least * bytes_per_tet > memory)
-    usage_error(what.str() + ": give a larger --size (in model units, or e.g. --size 2% of the diagonal)");
+    usage_error(what.str() + (o.remesh_surfaces && region_factors.empty()
+                                ? ": give a larger --size (in model units, or e.g. --size 2% of the diagonal)"
+                                : ": give larger factors" + std::string(o.remesh_surfaces ? " or a larger --size" : "")));
   if(4. * at_least * bytes_per_tet > memory && !o.quiet)
-    std::cout << "warning: " << what.str() << ": the run may not fit in memory; a larger --size makes it smaller\n";
+    std::cout << "warning: " << what.str() << ": the run may not fit in memory\n";
 }
 
 } // namespace
@@ -626,7 +635,7 @@ int main(int argc, char** argv)
   if(opt.check && !opt.quiet)
     std::cout << "surfaces (the names --surface-size-factor takes): " << list_surfaces(surface_names(model), 200) << "\n";
   if(opt.check) return 0;
-  if(opt.remesh_surfaces) check_remeshed_size(summary, opt, region_factors);
+  if(opt.remesh_surfaces || !region_factors.empty()) check_mesh_size(summary, opt, region_factors);
 
   // the section's plane, checked against the model before the (long) meshing
   K::Plane_3 cut_plane;
