@@ -8,6 +8,7 @@
 #include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
 #include <CGAL/Bubble_mesh_3/orient_patch_sides.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
+#include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/geological_model_summary.h>
 #include <CGAL/Bubble_mesh_3/IO/internal/write_atomically.h>
 #include <CGAL/Bubble_mesh_3/IO/write_mesh.h>
@@ -438,28 +439,28 @@ std::vector<double> factors_by_region(const BM::Geological_model_3<K>& model, co
   return f;
 }
 
+// the surface a patch is a part of: 'F1_2' is part 2 of 'F1' (the readers name the parts
+// of a surface cut in several so); a name without such a suffix is its own surface
+std::string surface_of(const std::string& patch)
+{
+  const std::size_t u = patch.rfind('_');
+  if(u == std::string::npos || u == 0 || u + 1 == patch.size() ||
+     patch.find_first_not_of("0123456789", u + 1) != std::string::npos)
+    return patch;
+  return patch.substr(0, u);
+}
+
 // a patch belongs to surface NAME when it is named NAME, or NAME_k (one part of a surface)
 bool is_part_of(const std::string& patch, const std::string& surface)
 {
-  if(patch == surface) return true;
-  if(patch.size() <= surface.size() + 1 || patch.compare(0, surface.size(), surface) != 0 || patch[surface.size()] != '_')
-    return false;
-  return patch.find_first_not_of("0123456789", surface.size() + 1) == std::string::npos;
+  return patch == surface || surface_of(patch) == surface;
 }
 
 // the surfaces' names with their numbers of parts: 'F1_1', 'F1_2' are 'F1' (2 parts)
 std::map<std::string, std::size_t> surface_names(const BM::Geological_model_3<K>& model)
 {
   std::map<std::string, std::size_t> surfaces;
-  for(const auto& patch : model.patches())
-  {
-    std::string n = patch.name;
-    const std::size_t u = n.rfind('_');
-    if(u != std::string::npos && u > 0 && u + 1 < n.size() &&
-       n.find_first_not_of("0123456789", u + 1) == std::string::npos)
-      n.resize(u);
-    ++surfaces[n];
-  }
+  for(const auto& patch : model.patches()) ++surfaces[surface_of(patch.name)];
   return surfaces;
 }
 
@@ -509,12 +510,10 @@ std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, con
 // typo, a size in the wrong unit) would run for hours and then be killed:
 // refuse when even the bound does not fit in the machine's memory, warn when a
 // quarter of it does not.
-void check_mesh_size(const BM::Geological_model_summary& summary, const Options& o,
-                         const std::vector<double>& region_factors)
+void check_mesh_size(const BM::Geological_model_3<K>& model, const BM::Geological_model_summary& summary,
+                     const Options& o, const std::vector<double>& region_factors)
 {
-  const CGAL::Bbox_3& b = summary.bbox;
-  const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
-                                    CGAL::square(b.zmax() - b.zmin()));
+  const double diagonal = BM::bbox_diagonal(model);
   const double h = o.size > 0. ? o.size : o.relative_size > 0. ? o.relative_size * diagonal : summary.median_edge_length;
   if(!(h > 0.) || !(diagonal > 0.)) return;
   double at_least = 0.;
@@ -529,19 +528,21 @@ void check_mesh_size(const BM::Geological_model_summary& summary, const Options&
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
   if(pages <= 0 || page <= 0) return;
   const double memory = double(pages) * double(page);
+  const bool factors = !region_factors.empty();
   std::ostringstream what;
   what << std::setprecision(3);
   if(o.remesh_surfaces)
     what << "a re-meshing size of " << h << " (" << 100. * h / diagonal << " % of the model's diagonal"
-         << (o.size > 0. || o.relative_size > 0. ? "" : ", the median input edge") << ")";
+         << (o.size > 0. || o.relative_size > 0. ? "" : ", the median input edge") << ")"
+         << (factors ? " with --region-size-factor" : "");
   else
     what << "--region-size-factor";
-  what << (region_factors.empty() ? "" : o.remesh_surfaces ? " with --region-size-factor" : "") << " asks for at least " << at_least / 1e6 << " million tetrahedra (about " << at_least * bytes_per_tet / 1e9
+  what << " asks for at least " << at_least / 1e6 << " million tetrahedra (about " << at_least * bytes_per_tet / 1e9
        << " GB; thin layers make it several times more), and this machine has " << memory / 1e9 << " GB";
   if(at_least * bytes_per_tet > memory)
-    usage_error(what.str() + (o.remesh_surfaces && region_factors.empty()
-                                ? ": give a larger --size (in model units, or e.g. --size 2% of the diagonal)"
-                                : ": give larger factors" + std::string(o.remesh_surfaces ? " or a larger --size" : "")));
+    usage_error(what.str() + (!factors ? ": give a larger --size (in model units, or e.g. --size 2% of the diagonal)"
+                              : o.remesh_surfaces ? ": give larger factors or a larger --size"
+                                                  : ": give larger factors"));
   if(4. * at_least * bytes_per_tet > memory && !o.quiet)
     std::cout << "warning: " << what.str() << ": the run may not fit in memory\n";
 }
@@ -635,7 +636,7 @@ int main(int argc, char** argv)
   if(opt.check && !opt.quiet)
     std::cout << "surfaces (the names --surface-size-factor takes): " << list_surfaces(surface_names(model), 200) << "\n";
   if(opt.check) return 0;
-  if(opt.remesh_surfaces || !region_factors.empty()) check_mesh_size(summary, opt, region_factors);
+  if(opt.remesh_surfaces || !region_factors.empty()) check_mesh_size(model, summary, opt, region_factors);
 
   // the section's plane, checked against the model before the (long) meshing
   K::Plane_3 cut_plane;
