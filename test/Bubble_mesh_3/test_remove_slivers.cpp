@@ -9,7 +9,9 @@
 // Then the same on the mesh of the generated layered model (bubbles placed,
 // tetrahedralized), with the share of tets under 10 degrees that no small
 // input angle explains, and on models given as arguments (.ml, .ts, .obj),
-// meshed by the whole pipeline (make_bubble_mesh_3 without sliver removal).
+// meshed by the whole pipeline (make_bubble_mesh_3 without sliver removal);
+// there the whole pipeline with its sliver removal must also leave few flat
+// cells (a zero Jacobian to a finite-element code) and make no cap facet.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -39,6 +41,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
@@ -82,7 +85,21 @@ struct Surface_state
   double min_dihedral = 180.;
   std::vector<double> aspect_ratios; // of the cells, sorted
   std::size_t under_10 = 0, under_bound = 0;
+  std::size_t flat = 0; // cells whose smallest dihedral angle is under BM::internal::flat_cell_angle
+  std::size_t caps = 0; // complex facets with an angle over 180 - flat_cell_angle (three points all but on a line)
 };
+
+double largest_triangle_angle(const Triangle& t)
+{
+  double largest = 0.;
+  for(int i = 0; i < 3; ++i)
+  {
+    const K::Vector_3 u(t[(i + 1) % 3][0] - t[i][0], t[(i + 1) % 3][1] - t[i][1], t[(i + 1) % 3][2] - t[i][2]);
+    const K::Vector_3 w(t[(i + 2) % 3][0] - t[i][0], t[(i + 2) % 3][1] - t[i][1], t[(i + 2) % 3][2] - t[i][2]);
+    largest = (std::max)(largest, CGAL::approximate_angle(u, w));
+  }
+  return largest;
+}
 
 template <class Mesh>
 Surface_state surface_state(const Mesh& c3t3, double bound)
@@ -100,6 +117,7 @@ Surface_state surface_state(const Mesh& c3t3, double bound)
     const K::Vector_3 u(t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]);
     const K::Vector_3 w(t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]);
     s.patch_areas[patch] += 0.5 * std::sqrt(CGAL::cross_product(u, w).squared_length());
+    if(largest_triangle_angle(t) > 180. - BM::internal::flat_cell_angle) ++s.caps;
     for(const Coordinates& c : t) s.surface_points.insert(c);
   }
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
@@ -118,6 +136,7 @@ Surface_state surface_state(const Mesh& c3t3, double bound)
     s.aspect_ratios.push_back(q.aspect_ratio);
     if(q.min_dihedral_angle < 10.) ++s.under_10;
     if(q.min_dihedral_angle < bound) ++s.under_bound;
+    if(q.min_dihedral_angle < BM::internal::flat_cell_angle) ++s.flat;
   }
   std::sort(s.aspect_ratios.begin(), s.aspect_ratios.end());
   return s;
@@ -599,9 +618,25 @@ void test_model(const std::string& name, const Model& m, bool strict)
     assert(!pr.sliver_removal.perturbation_done && !pr.sliver_removal.insertion_done &&
            !pr.sliver_removal.flips_done);
   }
-
   const double bound = 15.;
   const Surface_state s0 = surface_state(original, bound);
+  if(!strict)
+  {
+    // the whole pipeline, with the collapses of the recovery's Steiner points
+    // that only it can make (it knows what input triangle each lies on): a
+    // flat cell takes precedence over the count under the bound, and no
+    // collapse turns a facet into a cap (three points of one input edge).
+    // modelA5 with the surfaces kept: 5,611 flat cells (under 0.01 degrees)
+    // without sliver removal; 208 and 7 caps before this rule, 65 and none now
+    Model_c3t3 whole;
+    BM::make_bubble_mesh_3(m, whole);
+    const Surface_state sw = surface_state(whole, bound);
+    std::cout << "  whole pipeline: flat cells " << s0.flat << " -> " << sw.flat << ", cap facets " << s0.caps
+              << " -> " << sw.caps << ", min dihedral " << s0.min_dihedral << " -> " << sw.min_dihedral << std::endl;
+    assert(sw.caps <= s0.caps);
+    assert(sw.flat * 50 <= s0.flat || sw.flat <= 3);
+  }
+
   // the complex covers every input triangle: patch areas equal the input's
   std::map<int, double> input_areas;
   for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
@@ -630,6 +665,8 @@ void test_model(const std::string& name, const Model& m, bool strict)
     worst_area = (std::max)(worst_area, std::abs(s.patch_areas.at(pa.first) - pa.second) / pa.second);
   std::cout << "  every input triangle covered: largest relative difference of a patch's facet area to its input area "
             << worst_area << std::endl;
+  std::cout << "  flat cells " << s0.flat << " -> " << s.flat << ", cap facets " << s0.caps << " -> " << s.caps
+            << std::endl;
   assert(worst_area < 1e-9);
   // fewer cells under the bound, and under 10 degrees unless there were none
   assert(s.under_bound < s0.under_bound);
@@ -713,6 +750,11 @@ void test_models(int argc, char** argv)
               << std::endl;
   for(int i = 1; i < argc; ++i)
   {
+    if(!std::ifstream(argv[i]))
+    {
+      std::cout << "SKIP: " << argv[i] << " is not there" << std::endl;
+      continue;
+    }
     Model m;
     BM::IO::read_geological_model(argv[i], m);
     test_model(argv[i], m, false);

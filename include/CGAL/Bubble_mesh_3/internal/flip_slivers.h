@@ -28,7 +28,8 @@
 // vertices and region volumes stay. Every new cell is checked positively
 // oriented with the exact predicate, which makes the new cells an exact
 // partition of the old ones. A change is kept only if it beats the cells it
-// replaces (larger smallest angle, no more cells under the bound).
+// replaces (larger smallest angle, no more cells under the bound; around a
+// flat cell, a larger smallest angle is enough).
 //
 // The result is a valid triangulation but no longer a regular one, like the
 // insertion's.
@@ -258,7 +259,7 @@ private:
     auto consider = [&](int k) {
       Cell_set_quality destroyed;
       for(Cell_handle h : ch.old_cells) destroyed.add(cell_smallest_dihedral_angle(tr_, h), bound_);
-      if(!ch.made.improves_on(destroyed, angle_tolerance)) return;
+      if(!ch.made.improves_on(destroyed, angle_tolerance) && !ch.made.unflattens(destroyed, angle_tolerance)) return;
       if(kind != 0 && !(ch.made.min_angle > best.made.min_angle)) return;
       best = ch;
       kind = k;

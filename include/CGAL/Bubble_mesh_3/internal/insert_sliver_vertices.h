@@ -20,13 +20,15 @@
 // A cavity is taken only if its boundary is a sphere through all its vertices
 // and it contains no complex facet or edge, and a position only if the new
 // cells beat the destroyed ones (larger smallest angle, no more cells under
-// the bound).
+// the bound; with a flat cell among them, a larger smallest angle is enough).
 //
 // Cells with an edge on a complex facet whose smallest angle is under
 // `forced_angle` are left alone: such a facet makes poor cells whatever is
 // inserted next to it (the quality report counts them apart), and on models
 // with many such facets trying them took longer than the rest of the pipeline
-// (modelA1: 50 s for 8 % fewer cells under 10 degrees).
+// (modelA1: 50 s for 8 % fewer cells under 10 degrees). Flat cells
+// (`flat_cell_angle`) are tried all the same: few, and the needle only
+// explains a thin cell, not one whose four vertices lie in one plane.
 //
 // The result is a valid triangulation but no longer a regular (Delaunay) one:
 // the step runs last, and `remove_slivers()` checks the power test before any
@@ -130,6 +132,9 @@ public:
       const std::size_t before = stats.number_of_vertices_inserted;
       stats.number_of_slivers_forced = 0;
       auto take = [&](const Cell_vertices& v) {
+        if(smallest_dihedral_angle(coordinates(v[0]), coordinates(v[1]), coordinates(v[2]), coordinates(v[3])) <
+           flat_cell_angle)
+          return true;
         bool forced = false;
         for(int i = 0; i < 4 && !forced; ++i)
           for(int j = i + 1; j < 4 && !forced; ++j) forced = sharp_edges_.count(edge_key(v[i], v[j])) != 0;
@@ -164,17 +169,16 @@ private:
   // The cavity of `rings` rings of neighbours around `c` in `region`, checked.
   bool make_cavity(Cell_handle c, const Subdomain_index& region, int rings, Cavity& cav) const
   {
-    cav = Cavity();
+    std::vector<Cell_handle> cells(1, c);
     std::unordered_set<Cell_handle> in;
     in.insert(c);
-    cav.cells.push_back(c);
     std::size_t first = 0;
     for(int r = 0; r < rings; ++r)
     {
-      const std::size_t end = cav.cells.size();
+      const std::size_t end = cells.size();
       for(std::size_t k = first; k < end; ++k)
       {
-        const Cell_handle h = cav.cells[k];
+        const Cell_handle h = cells[k];
         for(int i = 0; i < 4; ++i)
         {
           const Cell_handle n = h->neighbor(i);
@@ -182,11 +186,38 @@ private:
              !(c3t3_.subdomain_index(n) == region))
             continue;
           in.insert(n);
-          cav.cells.push_back(n);
+          cells.push_back(n);
         }
       }
       first = end;
     }
+    return check_cavity(cells, cav);
+  }
+
+  // The cavity of the cells around edge (c, i, j), all in `region`, checked:
+  // for a flat cell on a surface, the star of the quad's other diagonal, which
+  // a point just off the diagonal's midpoint sees whole.
+  bool make_edge_cavity(Cell_handle c, int i, int j, const Subdomain_index& region, Cavity& cav) const
+  {
+    std::vector<Cell_handle> cells;
+    auto circ = tr_.incident_cells(c, i, j), done = circ;
+    do
+    {
+      const Cell_handle h = circ;
+      if(tr_.is_infinite(h) || !c3t3_.is_in_complex(h) || !(c3t3_.subdomain_index(h) == region)) return false;
+      cells.push_back(h);
+      ++circ;
+    } while(circ != done);
+    return check_cavity(cells, cav);
+  }
+
+  // `cav` from `cells`: false unless its boundary is a sphere through all its
+  // vertices and it holds no complex facet or edge inside
+  bool check_cavity(const std::vector<Cell_handle>& cells, Cavity& cav) const
+  {
+    cav = Cavity();
+    cav.cells = cells;
+    const std::unordered_set<Cell_handle> in(cells.begin(), cells.end());
     // boundary facets; facets between cavity cells must not be in the complex
     std::map<std::pair<Vertex_handle, Vertex_handle>, int> edge_uses;
     std::set<Vertex_handle> boundary_vertices, all_vertices;
@@ -274,19 +305,10 @@ private:
     Bare_point best_point;
     Cell_set_quality best_made;
     bool found = false;
-    // a third ring only for cells under the report's 10 degrees: few, and
-    // the ones the headline counts
-    const int max_rings = cell_smallest_dihedral_angle(tr_, c) < forced_angle ? 3 : 2;
-    for(int rings = 1; rings <= max_rings; ++rings)
-    {
-      // a larger cavity only when the smaller one did not reach the bound
-      if(found && !(best_made.min_angle < bound_)) break;
-      Cavity cav;
-      if(!make_cavity(c, region, rings, cav)) continue;
-      // positions: the sliver's centroid, the centroid of the cavity's
-      // vertices, seeded random points around the first, then a shrinking
-      // search around the best so far
-      std::vector<Vec3> positions(1, g);
+    // the best star over `cav` among `positions`, the centroid of the
+    // cavity's vertices, then seeded random points in a shrinking search
+    // around the best so far
+    auto search = [&](const Cavity& cav, std::vector<Vec3> positions) {
       {
         // summed in the order the boundary meets them (never by address, so
         // that runs agree to the last bit)
@@ -304,13 +326,13 @@ private:
         positions.push_back(h);
       }
       Cell_set_quality made;
-      Vec3 centre = g;
+      Vec3 centre = positions.front();
       double local_best = -1.;
       auto consider = [&](const Vec3& x) {
         const Bare_point p(x[0], x[1], x[2]);
         if(!star_quality(cav, p, made)) return;
         if(made.min_angle > local_best) { local_best = made.min_angle; centre = x; }
-        if(!made.improves_on(cav.destroyed, angle_tolerance)) return;
+        if(!made.improves_on(cav.destroyed, angle_tolerance) && !made.unflattens(cav.destroyed, angle_tolerance)) return;
         if(found && !(made.min_angle > best_made.min_angle)) return;
         found = true;
         best_made = made;
@@ -330,6 +352,52 @@ private:
           const Vec3 base = centre;
           consider({{base[0] + radius * d[0], base[1] + radius * d[1], base[2] + radius * d[2]}});
         }
+    };
+    const double angle = cell_smallest_dihedral_angle(tr_, c);
+    // A flat cell on a surface: the star of one of its edges (the quad's
+    // other diagonal), split by a point just off the edge's midpoint, on
+    // either side of the cell's plane (the normal of its largest face)
+    if(angle < flat_cell_angle)
+    {
+      Vec3 normal = {{0., 0., 0.}};
+      double largest = 0.;
+      for(int i = 0; i < 4; ++i)
+      {
+        const Vec3 p0 = coordinates(c->vertex((i + 1) % 4)), p1 = coordinates(c->vertex((i + 2) % 4)),
+                   p2 = coordinates(c->vertex((i + 3) % 4));
+        const Vec3 n = cross(sub(p1, p0), sub(p2, p0));
+        const double area = std::sqrt(dot(n, n));
+        if(area > largest) { largest = area; normal = {{n[0] / area, n[1] / area, n[2] / area}}; }
+      }
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j)
+        {
+          Cavity cav;
+          if(!make_edge_cavity(c, i, j, region, cav)) continue;
+          const Vec3 p = coordinates(c->vertex(i)), q = coordinates(c->vertex(j));
+          const Vec3 d = sub(q, p);
+          const double length = std::sqrt(dot(d, d));
+          std::vector<Vec3> positions;
+          for(double t : {0.05, 0.15, 0.3})
+            for(double side : {1., -1.})
+            {
+              const double o = side * t * length;
+              positions.push_back({{0.5 * (p[0] + q[0]) + o * normal[0], 0.5 * (p[1] + q[1]) + o * normal[1],
+                                    0.5 * (p[2] + q[2]) + o * normal[2]}});
+            }
+          search(cav, positions);
+        }
+    }
+    // a third ring only for cells under the report's 10 degrees: few, and
+    // the ones the headline counts
+    const int max_rings = angle < forced_angle ? 3 : 2;
+    for(int rings = 1; rings <= max_rings; ++rings)
+    {
+      // a larger cavity only when the smaller one did not reach the bound
+      if(found && !(best_made.min_angle < bound_)) break;
+      Cavity cav;
+      if(!make_cavity(c, region, rings, cav)) continue;
+      search(cav, std::vector<Vec3>(1, g));
     }
     if(!found) return false;
 

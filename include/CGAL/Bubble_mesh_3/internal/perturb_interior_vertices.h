@@ -161,6 +161,15 @@ double cell_smallest_dihedral_angle(const Tr& tr, typename Tr::Cell_handle c)
                                  vertex_coordinates(tr, c->vertex(2)), vertex_coordinates(tr, c->vertex(3)));
 }
 
+// A cell whose smallest dihedral angle is under this (degrees) is flat: its
+// four vertices all but in one plane (real models give 1e-14 degrees, an
+// aspect ratio of 1e15), a zero Jacobian to a finite-element code. Such a
+// cell lies on a surface more often than not, between two complex facets of
+// one nearly cocircular quad and the quad's other diagonal. Flips and
+// insertion take it away even at the price of more cells under the sliver
+// bound (`Cell_set_quality::unflattens()`).
+constexpr double flat_cell_angle = 0.01;
+
 // Smallest dihedral angle and count of cells under a bound, over a set of
 // cells; with the aspect ratios for the smoothing.
 struct Cell_set_quality
@@ -195,6 +204,11 @@ struct Cell_set_quality
   bool improves_on(const Cell_set_quality& o, double tolerance) const
   {
     return min_angle > o.min_angle + tolerance && under_bound <= o.under_bound;
+  }
+  // `o` has a flat cell and this set's smallest angle is larger
+  bool unflattens(const Cell_set_quality& o, double tolerance) const
+  {
+    return o.min_angle < flat_cell_angle && min_angle > o.min_angle + tolerance;
   }
 };
 
