@@ -627,7 +627,7 @@ void test_model(const std::string& name, const Model& m, bool strict)
     // flat cell takes precedence over the count under the bound, and no
     // collapse turns a facet into a cap (three points of one input edge).
     // modelA5 with the surfaces kept: 5,611 flat cells (under 0.01 degrees)
-    // without sliver removal; 208 and 4 caps before this rule, 65 and none now
+    // without sliver removal; 208 and 4 caps before these rules, 51 and none now
     Model_c3t3 whole;
     BM::make_bubble_mesh_3(m, whole);
     const Surface_state sw = surface_state(whole, bound);

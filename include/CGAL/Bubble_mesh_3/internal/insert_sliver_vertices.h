@@ -378,7 +378,7 @@ private:
           const Vec3 d = sub(q, p);
           const double length = std::sqrt(dot(d, d));
           std::vector<Vec3> positions;
-          for(double t : {0.05, 0.15, 0.3})
+          for(double t : {0.003, 0.01, 0.03, 0.1, 0.3})
             for(double side : {1., -1.})
             {
               const double o = side * t * length;
