@@ -35,12 +35,12 @@
 // Like the flips, the result is no longer a regular triangulation.
 
 #include <CGAL/Bubble_mesh_3/internal/perturb_interior_vertices.h>
+#include <CGAL/Bubble_mesh_3/internal/vertex_angle.h> // angle_degrees
 
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <map>
 #include <set>
@@ -136,13 +136,8 @@ private:
   {
     double largest = 0.;
     for(int i = 0; i < 3; ++i)
-    {
-      const Vec3 p = vertex_coordinates(tr_, t[i]);
-      const Vec3 a = sub(vertex_coordinates(tr_, t[(i + 1) % 3]), p), b = sub(vertex_coordinates(tr_, t[(i + 2) % 3]), p);
-      const double n = std::sqrt(dot(a, a) * dot(b, b));
-      if(n == 0.) return 180.;
-      largest = (std::max)(largest, std::acos((std::max)(-1., (std::min)(1., dot(a, b) / n))) * 180. / CGAL_PI);
-    }
+      largest = (std::max)(largest, angle_degrees(vertex_coordinates(tr_, t[i]), vertex_coordinates(tr_, t[(i + 1) % 3]),
+                                                  vertex_coordinates(tr_, t[(i + 2) % 3])));
     return largest;
   }
   // `after` (a complex facet moved) has its three points all but on a line,
