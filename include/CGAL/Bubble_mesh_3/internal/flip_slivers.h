@@ -90,7 +90,7 @@ public:
         if(kind != 0) ++changed;
       };
       const std::size_t tried = for_each_sliver_worst_first(
-        c3t3_, bound_, [](const Cell_vertices&) { return true; }, work, timer, time_limit, stats.time_limit_reached);
+        c3t3_, bound_, [](double, const Cell_vertices&) { return true; }, work, timer, time_limit, stats.time_limit_reached);
       stats.number_of_slivers_tried += tried;
       if(stats.time_limit_reached || !pass_paid(changed, tried, 20)) break;
     }

@@ -131,10 +131,8 @@ public:
       ++stats.number_of_passes;
       const std::size_t before = stats.number_of_vertices_inserted;
       stats.number_of_slivers_forced = 0;
-      auto take = [&](const Cell_vertices& v) {
-        if(smallest_dihedral_angle(coordinates(v[0]), coordinates(v[1]), coordinates(v[2]), coordinates(v[3])) <
-           flat_cell_angle)
-          return true;
+      auto take = [&](double angle, const Cell_vertices& v) {
+        if(angle < flat_cell_angle) return true;
         bool forced = false;
         for(int i = 0; i < 4 && !forced; ++i)
           for(int j = i + 1; j < 4 && !forced; ++j) forced = sharp_edges_.count(edge_key(v[i], v[j])) != 0;

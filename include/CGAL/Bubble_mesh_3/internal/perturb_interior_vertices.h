@@ -302,8 +302,9 @@ void replace_cells(C3T3& c3t3, const std::vector<typename C3T3::Triangulation::C
 }
 
 // One pass over the cells of the complex under `bound`, worst first, for the
-// steps that replace cells (flips, insertion): `take(vertices)` says whether a
-// sliver is worked on, `work(cell)` works on it. Cells die as the pass goes,
+// steps that replace cells (flips, insertion): `take(angle, vertices)` says
+// whether a sliver (its smallest dihedral angle, its vertices) is worked on,
+// `work(cell)` works on it. Cells die as the pass goes,
 // vertices never: a sliver is kept as its vertices and looked up again when
 // its turn comes. Returns the number of slivers worked on; stops when `timer`
 // passes `time_limit`, and says so in `out_of_time`.
@@ -321,7 +322,7 @@ std::size_t for_each_sliver_worst_first(C3T3& c3t3, double bound, const Take& ta
     const double a = cell_smallest_dihedral_angle(tr, c);
     if(!(a < bound)) continue;
     const Cell_vertices v = {{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
-    if(take(v)) slivers.push_back(std::make_pair(a, v));
+    if(take(a, v)) slivers.push_back(std::make_pair(a, v));
   }
   std::stable_sort(slivers.begin(), slivers.end(),
                    [](const std::pair<double, Cell_vertices>& a, const std::pair<double, Cell_vertices>& b) {
