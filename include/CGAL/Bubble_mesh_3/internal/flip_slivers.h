@@ -83,7 +83,7 @@ public:
     {
       ++stats.number_of_passes;
       std::size_t changed = 0;
-      auto work = [&](Cell_handle c) {
+      auto work = [&](Cell_handle c, double) {
         const int kind = improve(c);
         if(kind == 1) ++stats.number_of_2_3_flips;
         if(kind == 2) ++stats.number_of_edge_removals;
@@ -259,7 +259,7 @@ private:
     auto consider = [&](int k) {
       Cell_set_quality destroyed;
       for(Cell_handle h : ch.old_cells) destroyed.add(cell_smallest_dihedral_angle(tr_, h), bound_);
-      if(!ch.made.improves_on(destroyed, angle_tolerance) && !ch.made.unflattens(destroyed, angle_tolerance)) return;
+      if(!ch.made.replaces(destroyed, angle_tolerance)) return;
       if(kind != 0 && !(ch.made.min_angle > best.made.min_angle)) return;
       best = ch;
       kind = k;

@@ -139,8 +139,8 @@ public:
         if(forced) ++stats.number_of_slivers_forced;
         return !forced;
       };
-      auto work = [&](Cell_handle c) {
-        if(improve(c)) ++stats.number_of_vertices_inserted;
+      auto work = [&](Cell_handle c, double angle) {
+        if(improve(c, angle)) ++stats.number_of_vertices_inserted;
       };
       const std::size_t tried =
         for_each_sliver_worst_first(c3t3_, bound_, take, work, timer, time_limit, stats.time_limit_reached);
@@ -284,7 +284,8 @@ private:
 
   // Tries cavities of one, two (and three) rings around sliver `c` and a few
   // positions in each; inserts the best star if it beats the cells it replaces.
-  bool improve(Cell_handle c)
+  // `angle` is the smallest dihedral angle of `c`, as the pass measured it.
+  bool improve(Cell_handle c, double angle)
   {
     const Subdomain_index region = c3t3_.subdomain_index(c);
     Vec3 g = {{0., 0., 0.}};
@@ -330,7 +331,7 @@ private:
         const Bare_point p(x[0], x[1], x[2]);
         if(!star_quality(cav, p, made)) return;
         if(made.min_angle > local_best) { local_best = made.min_angle; centre = x; }
-        if(!made.improves_on(cav.destroyed, angle_tolerance) && !made.unflattens(cav.destroyed, angle_tolerance)) return;
+        if(!made.replaces(cav.destroyed, angle_tolerance)) return;
         if(found && !(made.min_angle > best_made.min_angle)) return;
         found = true;
         best_made = made;
@@ -351,7 +352,6 @@ private:
           consider({{base[0] + radius * d[0], base[1] + radius * d[1], base[2] + radius * d[2]}});
         }
     };
-    const double angle = cell_smallest_dihedral_angle(tr_, c);
     // A flat cell on a surface: the star of one of its edges (the quad's
     // other diagonal), split by a point just off the edge's midpoint, on
     // either side of the cell's plane (the normal of its largest face)

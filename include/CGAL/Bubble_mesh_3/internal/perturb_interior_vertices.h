@@ -210,6 +210,12 @@ struct Cell_set_quality
   {
     return o.min_angle < flat_cell_angle && min_angle > o.min_angle + tolerance;
   }
+  // the rule of the steps that replace cells (flips, insertion): better, or
+  // a flat cell taken away whatever the count under the bound
+  bool replaces(const Cell_set_quality& o, double tolerance) const
+  {
+    return improves_on(o, tolerance) || unflattens(o, tolerance);
+  }
 };
 
 // A new cell: in `region` (outside the complex if that is the default
@@ -304,7 +310,7 @@ void replace_cells(C3T3& c3t3, const std::vector<typename C3T3::Triangulation::C
 // One pass over the cells of the complex under `bound`, worst first, for the
 // steps that replace cells (flips, insertion): `take(angle, vertices)` says
 // whether a sliver (its smallest dihedral angle, its vertices) is worked on,
-// `work(cell)` works on it. Cells die as the pass goes,
+// `work(cell, angle)` works on it. Cells die as the pass goes,
 // vertices never: a sliver is kept as its vertices and looked up again when
 // its turn comes. Returns the number of slivers worked on; stops when `timer`
 // passes `time_limit`, and says so in `out_of_time`.
@@ -340,7 +346,7 @@ std::size_t for_each_sliver_worst_first(C3T3& c3t3, double bound, const Take& ta
     const Cell_vertices& v = s.second;
     if(!tr.is_cell(v[0], v[1], v[2], v[3], c) || !c3t3.is_in_complex(c)) continue;
     ++tried;
-    work(c);
+    work(c, s.first);
   }
   return tried;
 }
