@@ -93,8 +93,8 @@ const char* usage =
   "            --resting passes its resting_displacement_ratio (default: its own;\n"
   "            0: every bubble moves at every step). Bubble-steps count moved bubbles.\n"
   "            --paper-overlap-ratio: population control with METHOD.md's ratio as it\n"
-  "            stands (solid_angle_overlap_ratio(false)); the share of interior bubbles\n"
-  "            inside [10,14] is printed with both ratios either way.\n"
+  "            stands (solid_angle_overlap_ratio(false), wall_overlap_ratio(false)); the share\n"
+  "            of interior bubbles inside [10,14] is printed with both ratios either way.\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
   "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
@@ -373,8 +373,8 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     clock.print_rounds = print_rounds;
     const std::string load = load_average();
     const double c0 = cpu_seconds();
-    const auto np = params::solid_angle_overlap_ratio(!paper_ratio, params::number_of_threads(
-      threads, params::resting_displacement_ratio(resting, params::neighbor_skin(skin, params::visitor(std::ref(clock))))));
+    const auto np = params::solid_angle_overlap_ratio(!paper_ratio, params::wall_overlap_ratio(!paper_ratio, params::number_of_threads(
+      threads, params::resting_displacement_ratio(resting, params::neighbor_skin(skin, params::visitor(std::ref(clock)))))));
     const auto relax = [&](const auto& with) {
       return repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), with))
                        : BM::relax_bubbles(m, surface, interior, sizing, with);
@@ -385,10 +385,10 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     std::size_t outside = 0;
     for(const Bubble& b : interior)
       if(!sides.inside(b)) ++outside;
-    std::vector<double> alpha = BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(!paper_ratio));
+    std::vector<double> alpha = BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(!paper_ratio, params::wall_overlap_ratio(!paper_ratio)));
     // METHOD.md's formula as it stands (neighbours counted whatever their size), for issue 5's figure
     std::size_t paper_inside = 0;
-    for(double a : paper_ratio ? alpha : BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(false)))
+    for(double a : paper_ratio ? alpha : BM::overlap_ratios(m, surface, interior, params::solid_angle_overlap_ratio(false, params::wall_overlap_ratio(false))))
       paper_inside += (a >= 10. && a <= 14.);
     const std::vector<double> alpha_of_bubble = alpha;
     std::sort(alpha.begin(), alpha.end());

@@ -92,7 +92,8 @@ const char* usage_text =
 "                             counts neighbours whatever their size; by default each\n"
 "                             interior one counts by the solid angle it takes, so that\n"
 "                             graded sizes are not traded by the thousand round after\n"
-"                             round\n"
+"                             round, and a surface triangle much wider than the bubbles\n"
+"                             counts as the bubbles it could hold\n"
 "  --smooth N                 sliver removal also smooths all interior vertices, at most\n"
 "                             N passes (default 0: off): each moves towards the\n"
 "                             optimal-Delaunay point of its star (or the centroid of its\n"
@@ -710,7 +711,8 @@ int main(int argc, char** argv)
                     BM::parameters::patch_size_factors(patch_factors,
                     BM::parameters::number_of_population_rounds(opt.population_rounds,
                     BM::parameters::solid_angle_overlap_ratio(!opt.paper_overlap_ratio,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))))))))));
+                    BM::parameters::wall_overlap_ratio(!opt.paper_overlap_ratio,
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

@@ -184,6 +184,42 @@ static void test_overlap_ratio_weighting()
   for(std::size_t i = 0; i < p2.size(); ++i) assert(p2[i] == s2[i]);
 }
 
+// -- 2a'. the wall term: a bubble of radius 1 at distance d from a bare face
+// of the cube (its triangles 10 wide, no surface bubble within reach) counts
+// what a plane of equal bubbles at rest spacing would add, measured here by
+// summing max(0, 3 - l) over a fine grid of the plane at the hexagonal
+// lattice's density; next to a face triangulated finer than the bubble, whose
+// surface bubbles add more than that plane, the term is 0 and the ratio is
+// METHOD.md's
+static void test_wall_overlap_term()
+{
+  const Model coarse = make_cube(40., 4);
+  const std::vector<Bubble> none;
+  for(double d : {0.5, 1.2, 1.633, 2.5, 2.99})
+  {
+    const std::vector<Bubble> b(1, Bubble(Point_3(20.3, 19.6, d), 1., 1, BM::no_index, false));
+    const double alpha = BM::overlap_ratios(coarse, none, b)[0];
+    const double h = 0.004, density = 1. / (2. * std::sqrt(3.));
+    double plane = 0.;
+    for(double u = -3. + 0.5 * h; u < 3.; u += h)
+      for(double v = -3. + 0.5 * h; v < 3.; v += h)
+        plane += (std::max)(0., 3. - std::sqrt(u * u + v * v + d * d)) * h * h * density;
+    std::cout << "wall term at distance " << d << ": " << alpha << " (plane sum " << plane << ")" << std::endl;
+    assert(std::abs(alpha - plane) < 1e-3 * plane);
+    assert(BM::overlap_ratios(coarse, none, b, params::wall_overlap_ratio(false))[0] == 0.);
+  }
+  // nothing beyond three radii
+  const std::vector<Bubble> far(1, Bubble(Point_3(20., 20., 3.01), 1., 1, BM::no_index, false));
+  assert(BM::overlap_ratios(coarse, none, far)[0] == 0.);
+  // a face with points 1 apart and surface bubbles of radius 0.5
+  const Model fine = make_cube(8., 8);
+  const std::vector<Bubble> surface = fixed_bubbles(fine, 0.5);
+  const std::vector<Bubble> near(1, Bubble(Point_3(4.3, 3.8, 1.4), 1., 1, BM::no_index, false));
+  const double with_wall = BM::overlap_ratios(fine, surface, near)[0];
+  assert(with_wall > 5.);
+  assert(with_wall == BM::overlap_ratios(fine, surface, near, params::wall_overlap_ratio(false))[0]);
+}
+
 // -- 2b. the repulsive law: the cubic below w = 1, nothing beyond; two
 // overlapping bubbles part until they touch, two within the cubic's
 // attraction range stay where they are (the cubic would pull them together)
@@ -556,6 +592,7 @@ int main()
   test_repulsive_law();
   test_two_bubbles();
   test_overlap_ratio_weighting();
+  test_wall_overlap_term();
   test_lattice_at_rest();
   test_strays();
   std::vector<Bubble> one, two;

@@ -95,6 +95,7 @@ struct Dynamics_settings
   double min_overlap = 10.;
   double max_overlap = 14.;
   bool solid_angle_overlap = true;
+  bool wall_overlap = true;
   std::size_t population_rounds = default_number_of_population_rounds;
   double population_tolerance = 0.002;
   double insertion_clearance = 0.7;
@@ -125,6 +126,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.min_overlap = choose_parameter(get_parameter(np, internal_np::min_overlap_ratio), s.min_overlap);
   s.max_overlap = choose_parameter(get_parameter(np, internal_np::max_overlap_ratio), s.max_overlap);
   s.solid_angle_overlap = choose_parameter(get_parameter(np, internal_np::solid_angle_overlap_ratio), s.solid_angle_overlap);
+  s.wall_overlap = choose_parameter(get_parameter(np, internal_np::wall_overlap_ratio), s.wall_overlap);
   s.population_rounds = choose_parameter(get_parameter(np, internal_np::number_of_population_rounds), s.population_rounds);
   s.population_tolerance = choose_parameter(get_parameter(np, internal_np::population_tolerance), s.population_tolerance);
   s.rest_ratio = choose_parameter(get_parameter(np, internal_np::resting_displacement_ratio), s.rest_ratio);
@@ -392,32 +394,61 @@ inline double overlap_share(double l2, double ri, double rj, bool solid_angle)
   return share * (1. - std::sqrt(1. - sin_t * sin_t)) / (1. - 0.5 * std::sqrt(3.));
 }
 
+// What a plane at distance d = t r covered with bubbles of radius r (a
+// hexagonal lattice at rest spacing 2r) adds to a bubble of radius r's ratio:
+// the integral of max(0, 3r - l) / r over the plane at the lattice's density
+// 1 / (2 sqrt(3) r^2), (pi / sqrt 3)(4.5 - 1.5 t^2 + t^3 / 3) for t < 3.
+inline double plane_overlap(double t)
+{
+  if(!(t < 3.)) return 0.;
+  return 1.8137993642342178 * (4.5 - 1.5 * t * t + t * t * t / 3.);
+}
+
+// The wall term of a bubble at (x, y, z) of radius r whose surface neighbours
+// add `surface_sum` (times r), next to a bare wall (the nearest triangle at
+// least 3r long, 1.5 times the packing's spacing): what that surface would add
+// if its bubbles were as large as this one, less what they do add. Next to a
+// surface triangulated as finely as the packing the term is 0, so the lattice
+// of its bubbles is not second-guessed.
+template <class K>
+double wall_term(const Bubble_system<K>& s, double x, double y, double z, double r, double surface_sum)
+{
+  if(!s.confinement || !s.confinement->has_surfaces()) return 0.;
+  const double p[3] = {x, y, z};
+  double longest = 0.;
+  const double d = s.confinement->distance_to_surfaces(p, 3. * r, longest);
+  if(longest < 3. * r) return 0.;
+  return (std::max)(0., plane_overlap(d / r) - surface_sum / r);
+}
+
 template <class ConcurrencyTag, class K>
-std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Bubble_grid& grid, bool solid_angle)
+std::vector<double> overlap_ratios(const Bubble_system<K>& s, const Bubble_grid& grid, bool solid_angle, bool wall)
 {
   std::vector<double> alpha(s.n_free, 0.);
   for_each_block<ConcurrencyTag>(s.n_free, 256, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
     {
       const double xi = s.x[i], yi = s.y[i], zi = s.z[i], ri = s.r[i];
-      double sum = 0.;
+      double sum = 0., surf = 0.;
       grid.for_each_near(xi, yi, zi, 2. * ri, 1., [&](std::size_t j) {
         if(j == i) return;
         const double dx = s.x[j] - xi, dy = s.y[j] - yi, dz = s.z[j] - zi;
-        sum += overlap_share(dx * dx + dy * dy + dz * dz, ri, s.r[j], solid_angle && j < s.n_free);
+        const double sh = overlap_share(dx * dx + dy * dy + dz * dz, ri, s.r[j], solid_angle && j < s.n_free);
+        sum += sh;
+        if(j >= s.n_free) surf += sh;
       });
-      alpha[i] = sum / ri;
+      alpha[i] = sum / ri + (wall ? wall_term(s, xi, yi, zi, ri, surf) : 0.);
     }
   });
   return alpha;
 }
 
 template <class ConcurrencyTag, class K>
-std::vector<double> overlap_ratios(const Bubble_system<K>& s, bool solid_angle)
+std::vector<double> overlap_ratios(const Bubble_system<K>& s, bool solid_angle, bool wall)
 {
   Bubble_grid grid;
   s.fill_grid(grid, 1.5);
-  return overlap_ratios<ConcurrencyTag>(s, grid, solid_angle);
+  return overlap_ratios<ConcurrencyTag>(s, grid, solid_angle, wall);
 }
 
 // 32 directions spread evenly over the sphere (golden-angle spiral), the candidate gaps
@@ -466,7 +497,7 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
   Bubble_grid grid;
   s.fill_grid(grid, 1.5);
   const bool solid_angle = settings.solid_angle_overlap;
-  std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s, grid, solid_angle);
+  std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s, grid, solid_angle, settings.wall_overlap);
 
   // -- deletion
   std::vector<char> keep(n, 1), near_deleted(n, 0);
@@ -555,15 +586,18 @@ Population_change population_pass(Bubble_system<K>& s, const SizingField& sizing
       nx.push_back(q[0]); ny.push_back(q[1]); nz.push_back(q[2]); nr.push_back(q[3]);
       nclear.push_back(s.confinement->clearance(q.data(), q[3]));
       // the new bubble counts for its free neighbours at once, and they for it
-      double own = 0.;
+      double own = 0., surf = 0.;
       grid.for_each_near(q[0], q[1], q[2], 2. * q[3], 2., [&](std::size_t j) {
         if(!alive(j)) return;
         const double dx = px(j) - q[0], dy = py(j) - q[1], dz = pz(j) - q[2];
         const double l2 = dx * dx + dy * dy + dz * dz;
-        own += overlap_share(l2, q[3], pr(j), solid_angle && (j < n || j >= total)) / q[3];
+        const double sh = overlap_share(l2, q[3], pr(j), solid_angle && (j < n || j >= total));
+        own += sh / q[3];
+        if(j >= n && j < total) surf += sh;
         if(j < n || j >= total) ratio(j) += overlap_share(l2, pr(j), q[3], solid_angle) / pr(j);
       });
       grid.insert(id, q[0], q[1], q[2], q[3]);
+      if(settings.wall_overlap) own += wall_term(s, q[0], q[1], q[2], q[3], surf);
       nalpha.push_back(own);
       // A bubble inserted at the edge of an empty part of the region (the
       // placement's lattice is coarser than the bubbles near fine surfaces)
@@ -634,12 +668,27 @@ control does (named parameter `solid_angle_overlap_ratio`, see
 `relax_bubbles()`); surface bubbles count as in the formula above, and so do
 equal radii.
 
+A bubble next to a bare wall, a surface triangle at least 3 radii long (with
+the surfaces kept, a wide input triangle), has no surface bubbles to count on
+that side: the formula calls it sparse however it is packed, and population
+control keeps adding bubbles beside it. By default (named parameter
+`wall_overlap_ratio`) such a bubble counts the wall as the plane of bubbles of
+its own radius, at rest spacing, that it could hold, less what the surface
+bubbles near it already add. At distance \f$ d = t\,r_i \f$ that plane adds
+\f$ \frac{\pi}{\sqrt 3}(4.5 - 1.5 t^2 + t^3/3) \f$ for \f$ t < 3 \f$: 8.2 at
+the surface, 3.5 for a bubble resting on a hexagonal layer of equal bubbles
+(which add 3.5 too). Next to smaller triangles the surface bubbles count
+alone.
+
 The radii are taken as they are in the bubbles. Entry `i` belongs to
 `interior_bubbles[i]`; a bubble whose region is not a region of the model gets 0.
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{solid_angle_overlap_ratio}
     \cgalParamDescription{weight each term between interior bubbles by the neighbour's solid angle (`false`: METHOD.md's formula as it stands)}
+    \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+  \cgalParamNBegin{wall_overlap_ratio}
+    \cgalParamDescription{count a bare wall near a bubble as the plane of equal bubbles it could hold (`false`: METHOD.md's formula as it stands)}
     \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
 \cgalNamedParamsEnd
 */
@@ -651,7 +700,12 @@ std::vector<double> overlap_ratios(const Geological_model_3<K>& model, const std
 {
   const bool solid_angle = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, internal_np::solid_angle_overlap_ratio), true);
+  const bool wall = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::wall_overlap_ratio), true);
   const std::vector<std::vector<std::size_t> > pr = internal::regions_of_points(model);
+  std::vector<double> point_radius(model.number_of_points(), 0.);
+  for(const Bubble<K>& b : surface_bubbles)
+    if(b.surface_point < point_radius.size()) point_radius[b.surface_point] = b.radius;
   const std::size_t nreg = model.number_of_regions();
   std::vector<internal::Bubble_system<K> > systems(nreg + 1);
   std::vector<std::vector<std::size_t> > members(nreg + 1);
@@ -683,7 +737,11 @@ std::vector<double> overlap_ratios(const Geological_model_3<K>& model, const std
       s.box[d] = *std::min_element(coords[d]->begin(), coords[d]->end());
       s.box[d + 3] = *std::max_element(coords[d]->begin(), coords[d]->end());
     }
-    const std::vector<double> a = internal::overlap_ratios<ConcurrencyTag>(s, solid_angle);
+    // the wall term measures distances to the region's surfaces
+    if(wall)
+      s.confinement = std::make_shared<const internal::Region_confinement<K> >(model, reg, point_radius,
+                                                                                internal::Confinement_settings());
+    const std::vector<double> a = internal::overlap_ratios<ConcurrencyTag>(s, solid_angle, wall);
     for(std::size_t k = 0; k < members[reg].size(); ++k) alpha[members[reg][k]] = a[k];
   }
   return alpha;

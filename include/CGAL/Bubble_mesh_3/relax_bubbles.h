@@ -896,7 +896,7 @@ void tally_overlaps(const Bubble_system<K>& s, const Dynamics_settings& st, Regi
   rep.overlap_histogram.assign(overlap_histogram_bins, 0);
   rep.below = rep.inside = rep.above = 0;
   if(s.n_free == 0) return;
-  const std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s, st.solid_angle_overlap);
+  const std::vector<double> alpha = overlap_ratios<ConcurrencyTag>(s, st.solid_angle_overlap, st.wall_overlap);
   for(double a : alpha)
   {
     if(a < st.min_overlap) ++rep.below;
@@ -1234,6 +1234,13 @@ the end.
     \cgalParamDescription{weight each interior neighbour's term of the overlap ratio by the solid angle it takes,
       against an equal neighbour's, so that the bounds mean the same in a graded field (surface bubbles count
       unweighted); `false` gives METHOD.md's formula, which counts neighbours whatever their size (see
+      `overlap_ratios()`)}
+    \cgalParamType{`bool`} \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{wall_overlap_ratio}
+    \cgalParamDescription{a bubble within 3 radii of a surface triangle at least 3 radii long (a bare wall)
+      counts that surface as the plane of bubbles of its own radius it could hold, less what the surface
+      bubbles near it add; `false` counts the surface bubbles alone, as METHOD.md's formula does (see
       `overlap_ratios()`)}
     \cgalParamType{`bool`} \cgalParamDefault{`true`}
   \cgalParamNEnd

@@ -176,6 +176,22 @@ public:
   /// the protected ball that holds `p` deepest, or `none`
   std::size_t deepest_ball(const double p[3]) const { return deepest_ball(p, cell_at(p)); }
 
+  /// distance from `p` to the constraint surfaces, exact below `wanted` (beyond, some value >=
+  /// `wanted`), and below it the longest edge of the nearest triangle in `longest_edge`
+  double distance_to_surfaces(const double p[3], double wanted, double& longest_edge) const
+  {
+    longest_edge = 0.;
+    if(!tree_) return (std::numeric_limits<double>::max)();
+    const double d2 = squared_distance_to_surfaces(p, wanted);
+    if(!(d2 < wanted * wanted)) return std::sqrt(d2);
+    std::size_t t = none;
+    squared_distance_to_surfaces(p, wanted, &t);
+    const Triangle_3& tr = triangles_[t];
+    for(int k = 0; k < 3; ++k)
+      longest_edge = (std::max)(longest_edge, std::sqrt(CGAL::to_double(CGAL::squared_distance(tr[k], tr[(k + 1) % 3]))));
+    return std::sqrt(d2);
+  }
+
   /// nearest a bubble of radius `radius` may come to a surface
   double gap(double radius) const { return 0.5 * settings_.offset_ratio * radius; }
 

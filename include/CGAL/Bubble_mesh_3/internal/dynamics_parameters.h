@@ -37,6 +37,7 @@ enum round_displacement_tolerance_t { round_displacement_tolerance };
 enum min_overlap_ratio_t { min_overlap_ratio };
 enum max_overlap_ratio_t { max_overlap_ratio };
 enum solid_angle_overlap_ratio_t { solid_angle_overlap_ratio };
+enum wall_overlap_ratio_t { wall_overlap_ratio };
 enum number_of_population_rounds_t { number_of_population_rounds };
 enum population_tolerance_t { population_tolerance };
 enum insertion_clearance_t { insertion_clearance };
@@ -78,6 +79,9 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, max_overlap_ratio)
 /// each interior neighbour's term of the overlap ratio weighted by the solid angle it
 /// takes at rest distance, against an equal neighbour's (default `true`; `false`: METHOD.md's formula)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, solid_angle_overlap_ratio)
+/// a surface whose bubbles are sparser than an interior bubble near it counts in that bubble's
+/// overlap ratio as the plane of equal bubbles it could hold (default `true`; `false`: METHOD.md's formula)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, wall_overlap_ratio)
 /// most population-control rounds, each followed by a relaxation (default 12; 0 = none)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_population_rounds)
 /// the population has settled when a round changes at most this share of it, or one bubble (default 0.002)
