@@ -406,10 +406,11 @@ inline double plane_overlap(double t)
 
 // The wall term of a bubble at (x, y, z) of radius r whose surface neighbours
 // add `surface_sum` (times r), next to a bare wall (the nearest triangle at
-// least 3r long, 1.5 times the packing's spacing): what that surface would add
-// if its bubbles were as large as this one, less what they do add. Next to a
-// surface triangulated as finely as the packing the term is 0, so the lattice
-// of its bubbles is not second-guessed.
+// least 6r long, three times the packing's spacing): what that surface would
+// add if its bubbles were as large as this one, less what they do add. Next
+// to smaller triangles the term is 0, so the lattice of their bubbles is not
+// second-guessed (with 3r, the term also touched walls whose bubbles nearly
+// cover them, and made modelA5's mesh worse; bench/README.md, session 44).
 template <class K>
 double wall_term(const Bubble_system<K>& s, double x, double y, double z, double r, double surface_sum)
 {
@@ -417,7 +418,7 @@ double wall_term(const Bubble_system<K>& s, double x, double y, double z, double
   const double p[3] = {x, y, z};
   double longest = 0.;
   const double d = s.confinement->distance_to_surfaces(p, 3. * r, longest);
-  if(longest < 3. * r) return 0.;
+  if(longest < 6. * r) return 0.;
   return (std::max)(0., plane_overlap(d / r) - surface_sum / r);
 }
 
@@ -668,7 +669,7 @@ control does (named parameter `solid_angle_overlap_ratio`, see
 `relax_bubbles()`); surface bubbles count as in the formula above, and so do
 equal radii.
 
-A bubble next to a bare wall, a surface triangle at least 3 radii long (with
+A bubble next to a bare wall, a surface triangle at least 6 radii long (with
 the surfaces kept, a wide input triangle), has no surface bubbles to count on
 that side: the formula calls it sparse however it is packed, and population
 control keeps adding bubbles beside it. By default (named parameter

@@ -1238,7 +1238,7 @@ the end.
     \cgalParamType{`bool`} \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{wall_overlap_ratio}
-    \cgalParamDescription{a bubble within 3 radii of a surface triangle at least 3 radii long (a bare wall)
+    \cgalParamDescription{a bubble within 3 radii of a surface triangle at least 6 radii long (a bare wall)
       counts that surface as the plane of bubbles of its own radius it could hold, less what the surface
       bubbles near it add; `false` counts the surface bubbles alone, as METHOD.md's formula does (see
       `overlap_ratios()`)}
