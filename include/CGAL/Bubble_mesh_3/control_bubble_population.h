@@ -250,6 +250,17 @@ struct Bubble_system
   }
 };
 
+// the radius of the surface bubble at each model point (0 where there is none),
+// as `Region_confinement` takes them
+template <class K>
+std::vector<double> surface_point_radii(const Geological_model_3<K>& model, const std::vector<Bubble<K> >& surface_bubbles)
+{
+  std::vector<double> radius(model.number_of_points(), 0.);
+  for(const Bubble<K>& b : surface_bubbles)
+    if(b.surface_point < radius.size()) radius[b.surface_point] = b.radius;
+  return radius;
+}
+
 // regions of each model point (those whose constraint surfaces use it)
 template <class K>
 std::vector<std::vector<std::size_t> > regions_of_points(const Geological_model_3<K>& model)
@@ -292,9 +303,7 @@ make_bubble_systems(const Geological_model_3<K>& model, const std::vector<Bubble
     if(reg == 0 || reg > nr) skipped.push_back(i);
     else members[reg].push_back(i);
   }
-  std::vector<double> point_radius(model.number_of_points(), 0.);
-  for(const Bubble<K>& b : surface_bubbles)
-    if(b.surface_point < point_radius.size()) point_radius[b.surface_point] = b.radius;
+  const std::vector<double> point_radius = surface_point_radii(model, surface_bubbles);
   const std::vector<std::vector<std::size_t> > pr = regions_of_points(model);
 
   std::vector<std::size_t> active;
@@ -704,9 +713,7 @@ std::vector<double> overlap_ratios(const Geological_model_3<K>& model, const std
   const bool wall = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, internal_np::wall_overlap_ratio), true);
   const std::vector<std::vector<std::size_t> > pr = internal::regions_of_points(model);
-  std::vector<double> point_radius(model.number_of_points(), 0.);
-  for(const Bubble<K>& b : surface_bubbles)
-    if(b.surface_point < point_radius.size()) point_radius[b.surface_point] = b.radius;
+  const std::vector<double> point_radius = internal::surface_point_radii(model, surface_bubbles);
   const std::size_t nreg = model.number_of_regions();
   std::vector<internal::Bubble_system<K> > systems(nreg + 1);
   std::vector<std::vector<std::size_t> > members(nreg + 1);

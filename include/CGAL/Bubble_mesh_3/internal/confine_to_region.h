@@ -182,10 +182,9 @@ public:
   {
     longest_edge = 0.;
     if(!tree_) return (std::numeric_limits<double>::max)();
-    const double d2 = squared_distance_to_surfaces(p, wanted);
-    if(!(d2 < wanted * wanted)) return std::sqrt(d2);
     std::size_t t = none;
-    squared_distance_to_surfaces(p, wanted, &t);
+    const double d2 = squared_distance_to_surfaces(p, wanted, &t);
+    if(!(d2 < wanted * wanted) || t == none) return std::sqrt(d2);
     const Triangle_3& tr = triangles_[t];
     for(int k = 0; k < 3; ++k)
       longest_edge = (std::max)(longest_edge, std::sqrt(CGAL::to_double(CGAL::squared_distance(tr[k], tr[(k + 1) % 3]))));
@@ -796,9 +795,10 @@ private:
   Squared distance from p to the constraint surfaces, and optionally the
   nearest triangle and point. The cell lists hold every triangle within the
   pad of p, so when one of them is nearer than the pad it is the nearest one.
-  Otherwise the pad is a lower bound, returned when the caller needs the
-  distance only up to `wanted` <= pad (a bubble deep inside its region then
-  costs a cell look-up, not a walk down the tree); else the tree answers.
+  Otherwise the pad is a lower bound, returned (with `none` as the triangle)
+  when the caller needs the distance only up to `wanted` <= pad and not the
+  nearest point (a bubble deep inside its region then costs a cell look-up,
+  not a walk down the tree); else the tree answers.
   */
   double squared_distance_to_surfaces(const double p[3], double wanted, std::size_t* tri = nullptr,
                                       double q[3] = nullptr) const
@@ -826,7 +826,11 @@ private:
       if(d2 < best) { best = d2; bt = t; bq[0] = r[0]; bq[1] = r[1]; bq[2] = r[2]; }
       return true;
     });
-    if(bt == none && wanted <= face_pad_ && !tri && !q) return pad2;
+    if(bt == none && wanted <= face_pad_ && !q)
+    {
+      if(tri) *tri = none;
+      return pad2;
+    }
     if(bt == none)
     {
       const auto cp = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));

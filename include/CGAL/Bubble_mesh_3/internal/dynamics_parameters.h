@@ -79,7 +79,7 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, max_overlap_ratio)
 /// each interior neighbour's term of the overlap ratio weighted by the solid angle it
 /// takes at rest distance, against an equal neighbour's (default `true`; `false`: METHOD.md's formula)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, solid_angle_overlap_ratio)
-/// a surface whose bubbles are sparser than an interior bubble near it counts in that bubble's
+/// a surface triangle at least 6 radii long within 3 radii of an interior bubble counts in that bubble's
 /// overlap ratio as the plane of equal bubbles it could hold (default `true`; `false`: METHOD.md's formula)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, wall_overlap_ratio)
 /// most population-control rounds, each followed by a relaxation (default 12; 0 = none)
