@@ -96,7 +96,8 @@ const char* usage =
   "            stands (solid_angle_overlap_ratio(false), wall_overlap_ratio(false)); the share\n"
   "            of interior bubbles inside [10,14] is printed with both ratios either way.\n"
   "            --remesh-surfaces runs remesh_surfaces() (defaults) on each model first,\n"
-  "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one.\n"
+  "            as bubble_mesh_3 --remesh-surfaces does, and relaxes in the re-meshed one\n"
+  "            (with the sizing field's area_weighted_radius_floor, as the program).\n"
   "            --planar re-triangulates the planar pieces first (retriangulate_planar_patches(),\n"
   "            defaults), as bubble_mesh_3 does by default with the surfaces kept;\n"
   "            --planar-axis-only refines only the axis-plane pieces (refine_tilted_pieces(false));\n"
@@ -365,7 +366,8 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     }
     if(repulsive) name += " (repulsive law)";
     const std::vector<Bubble> surface = BM::place_surface_bubbles(m);
-    const BM::Surface_bubble_sizing_field<K> sizing(m, surface);
+    // as make_bubble_mesh_3() on re-meshed surfaces
+    const BM::Surface_bubble_sizing_field<K> sizing(m, surface, params::area_weighted_radius_floor(remesh));
     std::vector<Bubble> interior =
       BM::place_initial_bubbles(m, surface, sizing, params::graded_cell_factor(graded, params::cell_edge_factor(cell_edge_factor)));
     const std::size_t placed = interior.size();

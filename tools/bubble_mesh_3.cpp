@@ -888,7 +888,13 @@ int main(int argc, char** argv)
           std::cout << (k ? ", " : "") << "'" << model.region(bare[k]).name << "'";
         std::cout << (bare.size() > 5 ? ", ..." : "") << "): they are no thicker than their surface triangles are wide, "
                   << "so their tetrahedra join surface points only; for a finer mesh, "
-                  << (report.surfaces_remeshed ? "give a smaller --size" : "re-mesh the surfaces at a smaller size (--remesh-surfaces --size S, e.g. --size 2% for edges of 2 % of the model's diagonal)")
+                  << (report.surfaces_remeshed
+                        // the thickness rule stops at its floor, a tenth of the smallest patch size:
+                        // a region factor lowers both there without refining the rest of the model
+                        ? "give that region a size factor under 1 (e.g. --region-size-factor '" +
+                            model.region(bare[0]).name + "=0.3': its surfaces get finer, and so does the floor of the "
+                            "thickness rule, a tenth of the smallest surface size; many more tetrahedra), or a smaller --size"
+                        : std::string("re-mesh the surfaces at a smaller size (--remesh-surfaces --size S, e.g. --size 2% for edges of 2 % of the model's diagonal)"))
                   << "\n";
       }
     }

@@ -111,7 +111,9 @@ tiny angle are poor whatever the bubbles do inside. If the surface recovery
 fails on re-meshed surfaces that the thickness rule refined (down to a
 pinch-out, say), they are re-meshed with half as many edges across thin
 layers, then without the rule, and the stages run again
-(`Bubble_mesh_report::thickness_rule_relaxed`).
+(`Bubble_mesh_report::thickness_rule_relaxed`). On re-meshed surfaces the
+sizing field also takes `area_weighted_radius_floor(true)` unless `np` says
+otherwise: refined patches must not set the size deep inside the bodies.
 
 The model must be valid (`validate_geological_model()`); the stages assume
 it. Each stage is a free function that can be called alone; this function
@@ -205,7 +207,11 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     std::optional<Surface_bubble_sizing_field<GeomTraits> > sizing; // built with the surface bubbles, in their time
     timed("surface bubbles", report->time_surface_bubbles, [&] {
       surface_bubbles = place_surface_bubbles(meshed, np);
-      sizing.emplace(meshed, surface_bubbles, np);
+      // re-meshed surfaces have no huge triangles: R0 may then look at the area the sizes cover
+      sizing.emplace(meshed, surface_bubbles,
+                     parameters::area_weighted_radius_floor(
+                       choose_parameter(get_parameter(np, internal_np::area_weighted_radius_floor),
+                                        report->surfaces_remeshed), np));
     });
     report->number_of_surface_bubbles = surface_bubbles.size();
 

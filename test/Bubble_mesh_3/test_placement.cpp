@@ -367,6 +367,54 @@ static void test_radius_rule()
 // Smallest (distance to the nearest model triangle) / radius over the bubbles:
 // by brute force over all triangles, or with one AABB tree of all triangles
 // (independent of the per-region trees of the placement).
+// R0 with area_weighted_radius_floor: a region whose surface has many small
+// bubbles and a few large ones. One point in 40 gets radius 1, the others 0.1:
+// by count the large ones are under 5 % (R0 = 0.1), by area they cover 1 / (1 +
+// 39 * 0.01) = 72 % of the surface, so the floor is (0.1 + 1) / 4 = 0.275.
+static void test_area_weighted_radius_floor()
+{
+  const Model box = make_two_layer_box();
+  std::vector<Bubble> sb = BM::place_surface_bubbles(box);
+  for(Bubble& b : sb) b.radius = b.surface_point % 40 == 0 ? 1. : 0.1;
+  // region 1's radii, from its patches' triangles
+  std::set<std::size_t> points;
+  for(std::size_t t = 0; t < box.number_of_triangles(); ++t)
+  {
+    const auto& patch = box.patch(box.patch_of_triangle(t));
+    if(patch.positive_region == 1 || patch.negative_region == 1)
+      for(std::size_t v : box.triangle(t)) points.insert(v);
+  }
+  std::vector<double> r;
+  for(const Bubble& b : sb)
+    if(points.count(b.surface_point)) r.push_back(b.radius);
+  std::sort(r.begin(), r.end());
+  const std::size_t q = (r.size() - 1) / 20;
+  const double by_count = 0.5 * (r[q] + r[r.size() - 1 - q]);
+  double total = 0., covered = 0., low = -1., high = -1.;
+  for(double x : r) total += x * x;
+  for(double x : r)
+  {
+    covered += x * x;
+    if(low < 0. && covered >= 0.05 * total) low = x;
+    if(high < 0. && covered >= 0.95 * total) high = x;
+  }
+  const double floor = 0.25 * (low + high);
+  const BM::Surface_bubble_sizing_field<K> counted(box, sb);
+  const BM::Surface_bubble_sizing_field<K> floored(box, sb, BMP::area_weighted_radius_floor(true));
+  std::cout << "R0 of region 1 (" << r.size() << " surface bubbles): by count " << counted.default_radius(1)
+            << " (" << by_count << "), with the area floor " << floored.default_radius(1) << " (" << floor << ")\n";
+  assert(by_count == 0.1 && close(floor, 0.275, 1e-12)); // the case the floor is for
+  assert(counted.default_radius(1) == by_count);
+  assert(close(floored.default_radius(1), floor, 1e-12));
+  // far from every surface bubble the field is R0
+  const Point_3 far(100., 100., 100.);
+  assert(close(counted(far, 1), by_count, 1e-12) && close(floored(far, 1), floor, 1e-12));
+  // where the count is right (equal radii) the floor changes nothing
+  for(Bubble& b : sb) b.radius = 0.3;
+  const BM::Surface_bubble_sizing_field<K> even(box, sb, BMP::area_weighted_radius_floor(true));
+  assert(even.default_radius(1) == 0.3 && even.default_radius(2) == 0.3);
+}
+
 static double min_clearance_ratio(const Model& m, const std::vector<Bubble>& bubbles, bool brute_force)
 {
   std::vector<K::Triangle_3> tris;
@@ -637,6 +685,7 @@ int main()
   test_k_means_blobs();
   test_silhouette_subsample();
   test_radius_rule();
+  test_area_weighted_radius_floor();
   test_initial_bubbles_on_box();
   test_graded_cells_on_box();
   test_default_model();

@@ -55,6 +55,7 @@ enum surface_clearance_factor_t { surface_clearance_factor };
 enum interaction_range_factor_t { interaction_range_factor };
 enum radius_weighting_t { radius_weighting };
 enum size_gradation_t { size_gradation };
+enum area_weighted_radius_floor_t { area_weighted_radius_floor };
 enum region_scale_factors_t { region_scale_factors };
 enum parallel_regions_t { parallel_regions };
 enum placement_statistics_t { placement_statistics };
@@ -93,6 +94,9 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, interaction_range_factor)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Radius_weighting, radius_weighting)
 /// the wanted radius grows at most this much per unit of distance from a surface bubble; 0: no bound (default 0.5)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, size_gradation)
+/// R0 is at least half the value of the 5 % and 95 % quantiles taken by surface area (each surface bubble weighted by
+/// its radius squared) instead of by count (default false; `make_bubble_mesh_3()` sets it on re-meshed surfaces)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, area_weighted_radius_floor)
 /// entry r multiplies the wanted radius in region r; missing entries are 1 (default empty)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::vector<double>, region_scale_factors)
 /// process regions (and candidates) with TBB when it is linked (default true); the result does not depend on it
@@ -130,6 +134,27 @@ inline std::pair<double, double> quantiles_5_95(std::vector<double>& v)
   std::sort(v.begin(), v.end());
   const std::size_t q = (v.size() - 1) / 20;
   return std::make_pair(v[q], v[v.size() - 1 - q]);
+}
+
+// The same quantiles of radii weighted by the area each covers (r^2): the
+// smallest radius at which the radii up to it cover 5 % (95 %) of the sum. A
+// patch refined to a tenth of the size has a hundred times as many bubbles
+// per area, and by count would make the largest radii look like outliers.
+inline std::pair<double, double> area_weighted_quantiles_5_95(std::vector<double>& v)
+{
+  std::sort(v.begin(), v.end());
+  double total = 0.;
+  for(double r : v) total += r * r;
+  std::pair<double, double> q(v.back(), v.back());
+  double covered = 0.;
+  bool low = false;
+  for(double r : v)
+  {
+    covered += r * r;
+    if(!low && covered >= 0.05 * total) { q.first = r; low = true; }
+    if(covered >= 0.95 * total) { q.second = r; break; }
+  }
+  return q;
 }
 
 } // namespace internal
