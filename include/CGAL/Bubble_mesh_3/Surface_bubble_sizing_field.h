@@ -45,8 +45,8 @@ and `R0 = (q_95 + q_5) / 2` (the paper takes the smallest and largest
 radius; a box face given as two triangles would make them meaningless).
 With `area_weighted_radius_floor`, R0 is at least half of what the same
 quantiles give when each bubble is weighted by the area it covers (`r^2`):
-counted, a thin layer's sides re-meshed at a tenth of the size hold over 95 %
-of a region's bubbles on a third of its surface, and R0, the size far from every
+counted, the faces of a thin layer re-meshed at a tenth of the size hold over
+95 % of a neighbouring body's bubbles on a third of its surface, and R0, the size far from every
 surface, was that fine throughout a body hundreds of times thicker (a 2 m
 layer in a 1 km box: 9.6 M tetrahedra instead of 1.7 M). By area alone R0
 would also grow where the count is right (modelA1 re-meshed: 1.84 instead of
