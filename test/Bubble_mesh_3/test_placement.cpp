@@ -364,9 +364,6 @@ static void test_radius_rule()
   assert(close(graded(Point_3(1, 0, 0), 1), 10., 1e-12)); // a surface bubble's own radius stays
 }
 
-// Smallest (distance to the nearest model triangle) / radius over the bubbles:
-// by brute force over all triangles, or with one AABB tree of all triangles
-// (independent of the per-region trees of the placement).
 // R0 with area_weighted_radius_floor: a region whose surface has many small
 // bubbles and a few large ones. One point in 40 gets radius 1, the others 0.1:
 // by count the large ones are under 5 % (R0 = 0.1), by area they cover 1 / (1 +
@@ -415,6 +412,9 @@ static void test_area_weighted_radius_floor()
   assert(even.default_radius(1) == 0.3 && even.default_radius(2) == 0.3);
 }
 
+// Smallest (distance to the nearest model triangle) / radius over the bubbles:
+// by brute force over all triangles, or with one AABB tree of all triangles
+// (independent of the per-region trees of the placement).
 static double min_clearance_ratio(const Model& m, const std::vector<Bubble>& bubbles, bool brute_force)
 {
   std::vector<K::Triangle_3> tris;
