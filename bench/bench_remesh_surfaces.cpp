@@ -186,7 +186,8 @@ int main(int argc, char** argv)
     if(show_details)
     {
       std::cout << "    diagonal " << diagonal(input) << ", " << r.number_of_charts << " charts ("
-                << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points << "\n";
+                << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points
+                << " (" << r.number_of_staggered_curve_pieces << " curve pieces staggered across strips)\n";
       for(const std::string& p : problems) std::cout << "    problem: " << p << "\n";
       details(output, r, *field);
     }

@@ -679,6 +679,61 @@ void test_ribbon()
   assert(worst >= 20.);
 }
 
+// A layer 0.2 thick in the box [0,10] x [0,8] x [0,6], with a floor of the
+// thickness rule (0.6) three times its thickness: its sides on the box's
+// walls are strips 0.2 wide whose two long curves are sampled alike, about
+// 0.65 apart. Points facing each other cut the strip into right triangles of
+// atan(0.2 / 0.65) = 17 degrees; one side's points half-way between the
+// other's make isosceles ones of atan(0.4 / 0.65) = 32 degrees.
+void test_thin_layer_sides()
+{
+  std::cout << "a layer 0.2 thick meeting the walls, with a floor of 0.6\n";
+  Builder b;
+  const double z[4] = {0., 3., 3.2, 6.};
+  const std::size_t regions[3] = {b.model.add_region("lower"), b.model.add_region("layer"), b.model.add_region("upper")};
+  const std::size_t base = b.model.add_patch("base", 0, regions[0]), roof = b.model.add_patch("roof", 0, regions[2]);
+  b.rectangle(base, Point(0, 0, 0), Point(10, 0, 0), Point(10, 8, 0), Point(0, 8, 0), Vector(0, 0, -1));
+  b.rectangle(roof, Point(0, 0, 6), Point(10, 0, 6), Point(10, 8, 6), Point(0, 8, 6), Vector(0, 0, 1));
+  std::size_t layer_sides = 0;
+  for(int r = 0; r < 3; ++r)
+  {
+    if(r > 0)
+    {
+      const std::size_t h = b.model.add_patch("h" + std::to_string(r), regions[r], regions[r - 1]);
+      b.rectangle(h, Point(0, 0, z[r]), Point(10, 0, z[r]), Point(10, 8, z[r]), Point(0, 8, z[r]), Vector(0, 0, 1));
+    }
+    const std::size_t side = b.model.add_patch("sides" + std::to_string(r), 0, regions[r]);
+    if(r == 1) layer_sides = side;
+    const double lo = z[r], hi = z[r + 1];
+    b.rectangle(side, Point(0, 0, lo), Point(10, 0, lo), Point(10, 0, hi), Point(0, 0, hi), Vector(0, -1, 0));
+    b.rectangle(side, Point(10, 0, lo), Point(10, 8, lo), Point(10, 8, hi), Point(10, 0, hi), Vector(1, 0, 0));
+    b.rectangle(side, Point(10, 8, lo), Point(0, 8, lo), Point(0, 8, hi), Point(10, 8, hi), Vector(0, 1, 0));
+    b.rectangle(side, Point(0, 8, lo), Point(0, 0, lo), Point(0, 0, hi), Point(0, 8, hi), Vector(-1, 0, 0));
+  }
+  const Model& input = b.model;
+  BM::validate_geological_model(input);
+  const auto np = BM::parameters::edge_length(1., BM::parameters::minimum_edge_length(0.6));
+  BM::Remeshing_sizing_field<K> field(input, BM::detect_model_features(input), np);
+  const BM::Remeshing_sizing_field<K> given = field;
+  Model output;
+  const BM::Surface_remeshing_report r = BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field, np));
+  print("thin layer's sides", r);
+  double worst = 180.;
+  std::size_t on_sides = 0;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+    if(output.patch_of_triangle(t) == layer_sides)
+    {
+      ++on_sides;
+      worst = (std::min)(worst, min_angle(output, t));
+    }
+  std::cout << "    layer's sides: " << on_sides << " triangles, smallest angle " << worst << "\n";
+  assert(on_sides > 100 && worst >= 25.);
+  // one of the two long curves of each of the four sides
+  std::cout << "    " << r.number_of_staggered_curve_pieces << " curve pieces staggered\n";
+  assert(r.number_of_staggered_curve_pieces == 4);
+  check_remeshed(input, output, r, field, given, true, true);
+}
+
 // GOCAD models named on the command line, looked up in ../shared when not a path
 // (a real model takes tens of seconds: too long for every CI run)
 void test_real_models(const std::vector<std::string>& names)
@@ -722,6 +777,7 @@ int main(int argc, char** argv)
   test_in_memory(BM::Surface_remeshing_method::ISOTROPIC);
   test_overhang();
   test_ribbon();
+  test_thin_layer_sides();
   test_real_models(std::vector<std::string>(argv + 1, argv + argc));
   std::cout << "all remesh_surfaces checks passed\n";
   return EXIT_SUCCESS;

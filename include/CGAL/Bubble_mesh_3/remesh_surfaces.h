@@ -16,6 +16,7 @@
 #include <CGAL/Bubble_mesh_3/internal/remesh_patch_isotropic.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_triangle_tree.h>
 #include <CGAL/Bubble_mesh_3/internal/parallel_loops.h>
+#include <CGAL/Bubble_mesh_3/internal/Point_index_tree.h>
 #include <CGAL/Bubble_mesh_3/internal/remeshing_parameters.h>
 #include <CGAL/Bubble_mesh_3/internal/resample_curves.h>
 #include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
@@ -58,6 +59,10 @@ struct Surface_remeshing_report
   std::size_t number_of_chart_cuts = 0;       ///< charts cut again because their boundary overlapped in the plane
   std::size_t number_of_kept_curve_points = 0; ///< input points kept on curves (corners and turns)
   std::size_t number_of_curve_points = 0;     ///< points on the re-meshed curves
+  /// curve pieces whose points were moved half a spacing along, to stand
+  /// between those of another curve across a narrow strip (a thin layer's
+  /// side where it meets a wall)
+  std::size_t number_of_staggered_curve_pieces = 0;
   std::size_t number_of_points = 0;           ///< points of the output
   std::size_t number_of_triangles = 0;        ///< triangles of the output
 
@@ -336,6 +341,134 @@ private:
     }
   }
 
+  // A piece of a line between two kept points (indices into the line's
+  // points), and the positions sampled on it.
+  struct Line_piece
+  {
+    std::size_t first = 0, last = 0;
+    std::vector<Polyline_position> samples;
+  };
+
+  /*
+  Two curves of one patch closer than their spacing - the sides of a thin
+  layer where it meets the model's walls, a fault strip - are sampled alike,
+  so their points face each other across the strip (or drift in and out of
+  facing when their counts differ). Across a width w under t s, with s the
+  spacing and t the tangent of the angle bound, facing points make
+  triangles under the bound (atan(w / s)); from t s / 2 up, points of one
+  side half-way between those of the other make triangles that reach it
+  (atan(2 w / s)). Nearer (a ribbon pinching out) that would not help, and
+  such strips are left as they are. Line by line, a curve piece nine in ten
+  of whose samples have such a strip to one other curve of a common patch
+  takes its samples half-way between that curve's points
+  (interleave_polyline_samples()). The other curve's points must stay where
+  they are: kept points, or samples of a line before this one that was not
+  moved, so that of two sides of a strip one moves.
+  */
+  std::size_t stagger_strip_sides(std::vector<std::vector<Line_piece> >& pieces) const
+  {
+    const double t = std::tan(set_.angle_bound * CGAL_PI / 180.);
+    const std::size_t kept_point = std::size_t(-1);
+    std::vector<Point_3> points;
+    std::vector<std::size_t> owner_line, owner_piece; // owner_piece: kept_point for a piece's end
+    std::vector<std::vector<std::vector<Point_3> > > positions(lines_.size());
+    std::vector<std::vector<Point_3> > line_points(lines_.size());
+    for(std::size_t l = 0; l < lines_.size(); ++l)
+    {
+      if(!lines_[l].is_curve) continue;
+      const std::vector<Point_3>& pts = line_points[l] = points_of(lines_[l]);
+      for(std::size_t k = 0; k < pieces[l].size(); ++k)
+      {
+        const Line_piece& piece = pieces[l][k];
+        std::vector<Point_3> x(1, pts[piece.first]);
+        for(const Polyline_position& p : piece.samples)
+          x.push_back(pts[p.segment] + (pts[p.segment + 1] - pts[p.segment]) * p.t);
+        x.push_back(pts[piece.last]);
+        for(std::size_t j = 0; j < x.size(); ++j)
+        {
+          points.push_back(x[j]);
+          owner_line.push_back(l);
+          owner_piece.push_back((j == 0 || j + 1 == x.size()) ? kept_point : k);
+        }
+        positions[l].push_back(x);
+      }
+    }
+    const Point_index_tree<GeomTraits> tree(points);
+    auto share_patch = [&](std::size_t a, std::size_t b) {
+      for(std::size_t p : lines_[a].patches)
+        if(std::find(lines_[b].patches.begin(), lines_[b].patches.end(), p) != lines_[b].patches.end()) return true;
+      return false;
+    };
+    std::size_t staggered = 0;
+    std::vector<std::vector<char> > moved(lines_.size());
+    std::vector<std::size_t> found;
+    for(std::size_t l = 0; l < lines_.size(); ++l)
+    {
+      moved[l].assign(pieces[l].size(), 0);
+      if(!lines_[l].is_curve) continue;
+      const std::vector<Point_3>& pts = line_points[l];
+      for(std::size_t k = 0; k < pieces[l].size(); ++k)
+      {
+        const Line_piece& piece = pieces[l][k];
+        const std::vector<Point_3>& x = positions[l][k];
+        const std::size_t m = x.size() - 2;
+        if(m == 0) continue;
+        const double length = Polyline_arc_length<Point_3>(pts, piece.first, piece.last).total();
+        const double spacing = length / double(m + 1);
+        // the points of other curves of a common patch near the samples, that stay where they are
+        std::vector<std::size_t> near;
+        std::map<std::size_t, std::size_t> samples_near; // other line -> samples with a point of it near
+        for(std::size_t j = 1; j <= m; ++j)
+        {
+          tree.points_in_ball(x[j], spacing, found);
+          std::set<std::size_t> lines_here;
+          for(std::size_t q : found)
+          {
+            const std::size_t other = owner_line[q];
+            if(other == l || points[q] == x.front() || points[q] == x.back()) continue;
+            if(owner_piece[q] != kept_point && (other > l || moved[other][owner_piece[q]])) continue;
+            if(!share_patch(l, other)) continue;
+            near.push_back(q);
+            lines_here.insert(other);
+          }
+          for(std::size_t other : lines_here) ++samples_near[other];
+        }
+        std::size_t partner = 0, votes = 0;
+        for(const auto& v : samples_near)
+          if(v.second > votes) { partner = v.first; votes = v.second; }
+        if(10 * votes < 9 * m) continue;
+        std::sort(near.begin(), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        std::vector<Point_3> facing;
+        for(std::size_t q : near)
+          if(owner_line[q] == partner) facing.push_back(points[q]);
+        // across the strip, away from the piece's ends (a point near an end is
+        // the other side's corner, or would leave a tiny edge there)
+        std::vector<double> arcs;
+        for(const std::pair<double, double>& a : project_on_polyline(pts, piece.first, piece.last, facing))
+          if(a.second >= 0.5 * t * spacing && a.second < t * spacing && a.first > 0.6 * spacing &&
+             a.first < length - 0.6 * spacing)
+            arcs.push_back(a.first);
+        if(arcs.empty()) continue;
+        std::sort(arcs.begin(), arcs.end());
+        double gap = (std::max)(arcs.front(), length - arcs.back());
+        for(std::size_t i = 0; i + 1 < arcs.size(); ++i) gap = (std::max)(gap, arcs[i + 1] - arcs[i]);
+        if(gap > 2. * spacing) continue; // the strip does not run along the whole piece
+        pieces[l][k].samples = interleave_polyline_samples(pts, piece.first, piece.last, arcs);
+        moved[l][k] = 1;
+        ++staggered;
+      }
+    }
+    return staggered;
+  }
+
+  std::vector<Point_3> points_of(const Remesh_line& line) const
+  {
+    std::vector<Point_3> pts;
+    for(std::size_t v : line.points) pts.push_back(in_.point(v));
+    return pts;
+  }
+
   void resample_lines()
   {
     const double curve_tolerance = set_.curve_distance * sizing_.diagonal();
@@ -395,24 +528,39 @@ private:
           }
       }
     }
-    for(Remesh_line& line : lines_)
+    // the pieces between kept points, sampled
+    std::vector<std::vector<Line_piece> > pieces(lines_.size());
+    for(std::size_t l = 0; l < lines_.size(); ++l)
     {
-      const std::size_t n = line.points.size();
-      std::vector<Point_3> pts;
-      for(std::size_t v : line.points) pts.push_back(in_.point(v));
+      const Remesh_line& line = lines_[l];
+      const std::vector<Point_3> pts = points_of(line);
+      std::size_t last = 0;
+      for(std::size_t i = 1; i < line.points.size(); ++i)
+      {
+        if(!line.essential[i]) continue;
+        Line_piece piece;
+        piece.first = last;
+        piece.last = i;
+        piece.samples = sample_polyline_piece(pts, last, i, [&](const Point_3& x) { return line_size(line, x); });
+        pieces[l].push_back(piece);
+        last = i;
+      }
+    }
+    report_.number_of_staggered_curve_pieces = stagger_strip_sides(pieces);
+    for(std::size_t l = 0; l < lines_.size(); ++l)
+    {
+      Remesh_line& line = lines_[l];
+      const std::vector<Point_3> pts = points_of(line);
       line.out_points.clear();
       line.out_span.clear();
       line.span_charts.clear();
       line.out_points.push_back(keep(line.points[0]));
-      std::size_t last = 0;
-      for(std::size_t i = 1; i < n; ++i)
+      for(const Line_piece& piece : pieces[l])
       {
-        if(!line.essential[i]) continue;
+        const std::size_t last = piece.first, i = piece.last;
         const std::size_t span = line.span_charts.size();
         line.span_charts.push_back(edge_charts(line.points[last], line.points[last + 1]));
-        const std::vector<Polyline_position> samples =
-          sample_polyline_piece(pts, last, i, [&](const Point_3& x) { return line_size(line, x); });
-        for(const Polyline_position& s : samples)
+        for(const Polyline_position& s : piece.samples)
         {
           out_points_.push_back(pts[s.segment] + (pts[s.segment + 1] - pts[s.segment]) * s.t);
           out_fixed_.push_back(1);
@@ -421,7 +569,6 @@ private:
         }
         line.out_points.push_back(keep(line.points[i]));
         line.out_span.push_back(span);
-        last = i;
       }
       if(line.is_curve)
         for(std::size_t k = 0; k + 1 < line.out_points.size(); ++k)
@@ -883,7 +1030,12 @@ The method follows the original bubble meshing, level by level:
   bubbles relax along the curve (1-D, cubic force law, radii from the
   `Remeshing_sizing_field`), so every curve point lies on an input segment;
   each curve is resampled once and its points are shared by all the patches
-  that meet there, so interfaces stay conforming;
+  that meet there, so interfaces stay conforming; where two curves of one
+  patch run closer than a fraction of their spacing (a thin layer's side on
+  the model's walls: a strip narrower than the re-meshing's floor), one
+  curve's points move half-way between the other's, so that the strip is
+  cut into isosceles triangles, not right ones with a tiny angle
+  (`Surface_remeshing_report::number_of_staggered_curve_pieces`);
 - <b>patches</b> are triangulated once each (a patch is shared by its two
   regions) with the curve points fixed on their boundary: every patch is
   flattened onto one plane, or cut into a few charts when it bends more than

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -63,6 +64,93 @@ struct Polyline_position
   double t = 0.;
 };
 
+// Arc length along `pts[first..last]`, and back: positions on a piece of a
+// polyline from their distance to its start.
+template <class Point_3>
+class Polyline_arc_length
+{
+public:
+  Polyline_arc_length(const std::vector<Point_3>& pts, std::size_t first, std::size_t last)
+    : first_(first), cumulative_(1, 0.)
+  {
+    for(std::size_t i = first; i < last; ++i)
+      cumulative_.push_back(cumulative_.back() +
+                            std::sqrt(CGAL::to_double(CGAL::squared_distance(pts[i], pts[i + 1]))));
+  }
+
+  double total() const { return cumulative_.back(); }
+
+  Polyline_position position_at(double s) const
+  {
+    s = (std::max)(0., (std::min)(total(), s));
+    std::size_t k = std::size_t(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin());
+    k = (k == 0) ? 0 : k - 1;
+    if(k + 1 >= cumulative_.size()) k = cumulative_.size() - 2;
+    const double len = cumulative_[k + 1] - cumulative_[k];
+    Polyline_position pos;
+    pos.segment = first_ + k;
+    pos.t = len > 0. ? (std::min)(1., (std::max)(0., (s - cumulative_[k]) / len)) : 0.;
+    return pos;
+  }
+
+  double arc_length_at(const Polyline_position& pos) const
+  {
+    const std::size_t k = pos.segment - first_;
+    return cumulative_[k] + pos.t * (cumulative_[k + 1] - cumulative_[k]);
+  }
+
+private:
+  std::size_t first_;
+  std::vector<double> cumulative_;
+};
+
+// Where the points of `facing` (on another curve across a narrow strip) fall
+// on `pts[first..last]`, as arc lengths from its start, with their distances
+// to it. Each point goes to its nearest segment of the piece.
+template <class Point_3>
+std::vector<std::pair<double, double> > project_on_polyline(const std::vector<Point_3>& pts, std::size_t first,
+                                                           std::size_t last, const std::vector<Point_3>& facing)
+{
+  const Polyline_arc_length<Point_3> arc(pts, first, last);
+  std::vector<std::pair<double, double> > result;
+  for(const Point_3& q : facing)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    Polyline_position at;
+    for(std::size_t i = first; i < last; ++i)
+    {
+      const auto ab = pts[i + 1] - pts[i];
+      const double l2 = CGAL::to_double(ab.squared_length());
+      double t = l2 > 0. ? CGAL::to_double((q - pts[i]) * ab) / l2 : 0.;
+      t = (std::max)(0., (std::min)(1., t));
+      const double d2 = CGAL::to_double(CGAL::squared_distance(q, pts[i] + ab * t));
+      if(d2 < best) { best = d2; at.segment = i; at.t = t; }
+    }
+    if(std::isfinite(best)) result.push_back(std::make_pair(arc.arc_length_at(at), std::sqrt(best)));
+  }
+  return result;
+}
+
+// New samples for `pts[first..last]` half-way between the arc lengths
+// `facing` (sorted, inside the piece) and the piece's ends. Two curves across
+// a strip narrower than their spacing are sampled alike, so their points face
+// each other and the strip is cut into right triangles with an angle of
+// atan(width / spacing), 16 degrees for a 2 m layer at a spacing of 7; with
+// one side's points half-way between the other's, the triangles are
+// isosceles with base angles of atan(2 width / spacing), 30 degrees there.
+template <class Point_3>
+std::vector<Polyline_position> interleave_polyline_samples(const std::vector<Point_3>& pts, std::size_t first,
+                                                           std::size_t last, const std::vector<double>& facing)
+{
+  const Polyline_arc_length<Point_3> arc(pts, first, last);
+  std::vector<double> s(1, 0.);
+  s.insert(s.end(), facing.begin(), facing.end());
+  s.push_back(arc.total());
+  std::vector<Polyline_position> result;
+  for(std::size_t k = 0; k + 1 < s.size(); ++k) result.push_back(arc.position_at(0.5 * (s[k] + s[k + 1])));
+  return result;
+}
+
 // The cubic law of the bubble method (METHOD.md eq. 6), normalised distance w.
 inline double remesh_cubic_force(double w)
 {
@@ -80,26 +168,12 @@ std::vector<Polyline_position> sample_polyline_piece(const std::vector<Point_3>&
                                                      std::size_t last, const SizeFunction& size,
                                                      std::size_t relaxation_steps = 30)
 {
-  std::vector<double> cumulative(1, 0.);
-  for(std::size_t i = first; i < last; ++i)
-    cumulative.push_back(cumulative.back() +
-                         std::sqrt(CGAL::to_double(CGAL::squared_distance(pts[i], pts[i + 1]))));
-  const double total = cumulative.back();
+  const Polyline_arc_length<Point_3> arc(pts, first, last);
+  const double total = arc.total();
   std::vector<Polyline_position> result;
   if(!(total > 0.)) return result;
 
-  auto point_at = [&](double s) {
-    s = (std::max)(0., (std::min)(total, s));
-    std::size_t k = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), s) - cumulative.begin());
-    k = (k == 0) ? 0 : k - 1;
-    if(k >= last - first) k = last - first - 1;
-    const double len = cumulative[k + 1] - cumulative[k];
-    const double t = len > 0. ? (std::min)(1., (std::max)(0., (s - cumulative[k]) / len)) : 0.;
-    Polyline_position pos;
-    pos.segment = first + k;
-    pos.t = t;
-    return pos;
-  };
+  auto point_at = [&](double s) { return arc.position_at(s); };
   auto eval = [&](const Polyline_position& pos) {
     return pts[pos.segment] + (pts[pos.segment + 1] - pts[pos.segment]) * pos.t;
   };
