@@ -59,9 +59,8 @@ struct Surface_remeshing_report
   std::size_t number_of_chart_cuts = 0;       ///< charts cut again because their boundary overlapped in the plane
   std::size_t number_of_kept_curve_points = 0; ///< input points kept on curves (corners and turns)
   std::size_t number_of_curve_points = 0;     ///< points on the re-meshed curves
-  /// curve pieces whose points were moved half a spacing along, to stand
-  /// between those of another curve across a narrow strip (a thin layer's
-  /// side where it meets a wall)
+  /// curve pieces whose points were moved half-way between those of another
+  /// curve across a narrow strip (a thin layer's side where it meets a wall)
   std::size_t number_of_staggered_curve_pieces = 0;
   std::size_t number_of_points = 0;           ///< points of the output
   std::size_t number_of_triangles = 0;        ///< triangles of the output
@@ -365,24 +364,23 @@ private:
   they are: kept points, or samples of a line before this one that was not
   moved, so that of two sides of a strip one moves.
   */
-  std::size_t stagger_strip_sides(std::vector<std::vector<Line_piece> >& pieces) const
+  std::size_t stagger_strip_sides(const std::vector<std::vector<Point_3> >& line_points,
+                                  std::vector<std::vector<Line_piece> >& pieces) const
   {
     const double t = std::tan(set_.angle_bound * CGAL_PI / 180.);
     const std::size_t kept_point = std::size_t(-1);
     std::vector<Point_3> points;
     std::vector<std::size_t> owner_line, owner_piece; // owner_piece: kept_point for a piece's end
     std::vector<std::vector<std::vector<Point_3> > > positions(lines_.size());
-    std::vector<std::vector<Point_3> > line_points(lines_.size());
     for(std::size_t l = 0; l < lines_.size(); ++l)
     {
       if(!lines_[l].is_curve) continue;
-      const std::vector<Point_3>& pts = line_points[l] = points_of(lines_[l]);
+      const std::vector<Point_3>& pts = line_points[l];
       for(std::size_t k = 0; k < pieces[l].size(); ++k)
       {
         const Line_piece& piece = pieces[l][k];
         std::vector<Point_3> x(1, pts[piece.first]);
-        for(const Polyline_position& p : piece.samples)
-          x.push_back(pts[p.segment] + (pts[p.segment + 1] - pts[p.segment]) * p.t);
+        for(const Polyline_position& p : piece.samples) x.push_back(point_on_polyline(pts, p));
         x.push_back(pts[piece.last]);
         for(std::size_t j = 0; j < x.size(); ++j)
         {
@@ -462,13 +460,6 @@ private:
     return staggered;
   }
 
-  std::vector<Point_3> points_of(const Remesh_line& line) const
-  {
-    std::vector<Point_3> pts;
-    for(std::size_t v : line.points) pts.push_back(in_.point(v));
-    return pts;
-  }
-
   void resample_lines()
   {
     const double curve_tolerance = set_.curve_distance * sizing_.diagonal();
@@ -529,11 +520,13 @@ private:
       }
     }
     // the pieces between kept points, sampled
+    std::vector<std::vector<Point_3> > line_points(lines_.size());
     std::vector<std::vector<Line_piece> > pieces(lines_.size());
     for(std::size_t l = 0; l < lines_.size(); ++l)
     {
       const Remesh_line& line = lines_[l];
-      const std::vector<Point_3> pts = points_of(line);
+      std::vector<Point_3>& pts = line_points[l];
+      for(std::size_t v : line.points) pts.push_back(in_.point(v));
       std::size_t last = 0;
       for(std::size_t i = 1; i < line.points.size(); ++i)
       {
@@ -546,11 +539,11 @@ private:
         last = i;
       }
     }
-    report_.number_of_staggered_curve_pieces = stagger_strip_sides(pieces);
+    report_.number_of_staggered_curve_pieces = stagger_strip_sides(line_points, pieces);
     for(std::size_t l = 0; l < lines_.size(); ++l)
     {
       Remesh_line& line = lines_[l];
-      const std::vector<Point_3> pts = points_of(line);
+      const std::vector<Point_3>& pts = line_points[l];
       line.out_points.clear();
       line.out_span.clear();
       line.span_charts.clear();
@@ -562,7 +555,7 @@ private:
         line.span_charts.push_back(edge_charts(line.points[last], line.points[last + 1]));
         for(const Polyline_position& s : piece.samples)
         {
-          out_points_.push_back(pts[s.segment] + (pts[s.segment + 1] - pts[s.segment]) * s.t);
+          out_points_.push_back(point_on_polyline(pts, s));
           out_fixed_.push_back(1);
           line.out_points.push_back(out_points_.size() - 1);
           line.out_span.push_back(span);

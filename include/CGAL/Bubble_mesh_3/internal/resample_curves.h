@@ -64,6 +64,13 @@ struct Polyline_position
   double t = 0.;
 };
 
+// The point at `pos` on the polyline `pts`.
+template <class Point_3>
+Point_3 point_on_polyline(const std::vector<Point_3>& pts, const Polyline_position& pos)
+{
+  return pts[pos.segment] + (pts[pos.segment + 1] - pts[pos.segment]) * pos.t;
+}
+
 // Arc length along `pts[first..last]`, and back: positions on a piece of a
 // polyline from their distance to its start.
 template <class Point_3>
@@ -174,10 +181,7 @@ std::vector<Polyline_position> sample_polyline_piece(const std::vector<Point_3>&
   if(!(total > 0.)) return result;
 
   auto point_at = [&](double s) { return arc.position_at(s); };
-  auto eval = [&](const Polyline_position& pos) {
-    return pts[pos.segment] + (pts[pos.segment + 1] - pts[pos.segment]) * pos.t;
-  };
-  auto size_at = [&](double s) { return size(eval(point_at(s))); };
+  auto size_at = [&](double s) { return size(point_on_polyline(pts, point_at(s))); };
 
   // integral of ds / h, by steps of a quarter of the local size
   std::vector<double> ss(1, 0.), ii(1, 0.);
