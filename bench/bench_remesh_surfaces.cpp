@@ -187,7 +187,8 @@ int main(int argc, char** argv)
     {
       std::cout << "    diagonal " << diagonal(input) << ", " << r.number_of_charts << " charts ("
                 << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points
-                << " (" << r.number_of_staggered_curve_pieces << " curve pieces staggered across strips)\n";
+                << " (" << r.number_of_staggered_curve_pieces << " curve pieces staggered across strips), "
+                << r.number_of_collapsed_points << " crowded points collapsed\n";
       for(const std::string& p : problems) std::cout << "    problem: " << p << "\n";
       details(output, r, *field);
     }

@@ -679,6 +679,43 @@ void test_ribbon()
   assert(worst >= 20.);
 }
 
+// A free vertex crowded against a curve edge: a hexagon of fixed points
+// around a free centre c, with a second free vertex d at 0.1 from the edge
+// H0 H1 (triangle d H0 H1 of 11.3 degrees). Collapsing d away leaves the six
+// equilateral triangles; with sizes too small for the edges that would make,
+// nothing changes.
+void test_collapse_crowded_vertex()
+{
+  std::cout << "a free vertex crowded against a curve edge\n";
+  std::vector<Point> pts;
+  for(int k = 0; k < 6; ++k) pts.push_back(Point(std::cos(k * CGAL_PI / 3.), std::sin(k * CGAL_PI / 3.), 0.));
+  const std::size_t c = pts.size();
+  pts.push_back(Point(0, 0, 0));
+  const std::size_t d = pts.size();
+  const double r = std::sqrt(0.75) - 0.1; // 0.1 inside the edge H0 H1
+  pts.push_back(Point(r * std::cos(CGAL_PI / 6.), r * std::sin(CGAL_PI / 6.), 0.));
+  std::vector<char> fixed(pts.size(), 1);
+  fixed[c] = fixed[d] = 0;
+  std::vector<std::array<std::size_t, 3> > tris{{{c, 0, d}}, {{c, d, 1}}, {{d, 0, 1}}};
+  for(std::size_t k = 1; k < 6; ++k) tris.push_back({{c, k, (k + 1) % 6}});
+  auto smallest = [&](const std::vector<std::array<std::size_t, 3> >& ts) {
+    double m = 180.;
+    for(const auto& t : ts) m = (std::min)(m, BM::internal::min_angle_degrees(pts[t[0]], pts[t[1]], pts[t[2]]));
+    return m;
+  };
+  assert(smallest(tris) < 12.);
+  // sizes of 0.5: the collapse would make edges of 1, twice the size
+  std::vector<std::array<std::size_t, 3> > small_sizes = tris;
+  assert(BM::internal::collapse_crowded_vertices(pts, small_sizes, fixed, [](const Point&) { return 0.5; }, 25.) == 0);
+  assert(small_sizes == tris);
+  assert(BM::internal::collapse_crowded_vertices(pts, tris, fixed, [](const Point&) { return 1.; }, 25.) == 1);
+  std::cout << "  " << tris.size() << " triangles, smallest angle " << smallest(tris) << "\n";
+  assert(tris.size() == 6 && smallest(tris) > 59.99);
+  std::set<std::size_t> used;
+  for(const auto& t : tris) used.insert(t.begin(), t.end());
+  assert(used.count(d) == 0 && used.count(c) == 1 && used.size() == 7);
+}
+
 // A layer 0.2 thick in the box [0,10] x [0,8] x [0,6], with a floor of the
 // thickness rule (0.6) three times its thickness: its sides on the box's
 // walls are strips 0.2 wide whose two long curves are sampled alike, about
@@ -777,6 +814,7 @@ int main(int argc, char** argv)
   test_in_memory(BM::Surface_remeshing_method::ISOTROPIC);
   test_overhang();
   test_ribbon();
+  test_collapse_crowded_vertex();
   test_thin_layer_sides();
   test_real_models(std::vector<std::string>(argv + 1, argv + argc));
   std::cout << "all remesh_surfaces checks passed\n";

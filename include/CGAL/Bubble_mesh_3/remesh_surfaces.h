@@ -62,6 +62,9 @@ struct Surface_remeshing_report
   /// curve pieces whose points were moved half-way between those of another
   /// curve across a narrow strip (a thin layer's side where it meets a wall)
   std::size_t number_of_staggered_curve_pieces = 0;
+  /// free points collapsed into a neighbour to lift a triangle over the
+  /// angle bound (a point left crowded against a curve)
+  std::size_t number_of_collapsed_points = 0;
   std::size_t number_of_points = 0;           ///< points of the output
   std::size_t number_of_triangles = 0;        ///< triangles of the output
 
@@ -683,12 +686,19 @@ private:
         out_fixed_.resize(out_points_.size(), 0);
         continue;
       }
-      for(int pass = 0; pass < 4; ++pass)
+      for(int round = 0; round < 3; ++round)
       {
-        const std::size_t flips = flip_to_improve_angles(out_points_, patch_out_[p], out_curve_edges_, 30.);
-        const std::size_t moves =
-          smooth_free_vertices<GeomTraits>(out_points_, patch_out_[p], out_fixed_, patch_trees_[p], set_.angle_bound + 5.);
-        if(flips == 0 && moves == 0) break;
+        for(int pass = 0; pass < 4; ++pass)
+        {
+          const std::size_t flips = flip_to_improve_angles(out_points_, patch_out_[p], out_curve_edges_, 30.);
+          const std::size_t moves = smooth_free_vertices<GeomTraits>(out_points_, patch_out_[p], out_fixed_,
+                                                                     patch_trees_[p], set_.angle_bound + 5.);
+          if(flips == 0 && moves == 0) break;
+        }
+        const std::size_t collapses =
+          collapse_crowded_vertices(out_points_, patch_out_[p], out_fixed_, Patch_size(sizing_, p), set_.angle_bound);
+        report_.number_of_collapsed_points += collapses;
+        if(collapses == 0) break;
       }
       flip_to_improve_angles(out_points_, patch_out_[p], out_curve_edges_, 30.);
     }
@@ -1038,7 +1048,9 @@ The method follows the original bubble meshing, level by level:
   and kept inside it), with population control by the overlap ratio, and
   circumcentres are added where an angle is still under
   `minimum_triangle_angle`; in 3D, edge flips and vertex moves projected
-  onto the patch finish the job.
+  onto the patch finish the job, and a point left crowded into a triangle
+  under that angle is collapsed into a neighbour where that helps
+  (`Surface_remeshing_report::number_of_collapsed_points`).
 
 Every new point lies on the input patch (it is a point of an input
 triangle of the same patch, up to rounding). A curved input patch

@@ -11,8 +11,9 @@
 // the smaller angle of the two triangles (Delaunay in the surface) and
 // vertex moves towards the centre of their neighbours, projected back onto
 // the input patch and kept only when the worst angle around does not get
-// worse, fix that and smooth the seams between charts. Curve edges are never
-// flipped and curve points never move.
+// worse, fix that and smooth the seams between charts; a vertex crowded
+// into a poor triangle that neither cures is collapsed into a neighbour.
+// Curve edges are never flipped and curve points never move.
 
 #include <CGAL/Bubble_mesh_3/internal/remesh_chart_triangulation.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_triangle_tree.h>
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <deque>
+#include <iterator>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -208,6 +210,128 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
     if(!(best == old)) ++moves;
   }
   return moves;
+}
+
+// Collapses free vertices of triangles under `angle_bound` into one of their
+// neighbours, where that raises the smallest angle around them. Where the
+// sizes change fast (next to a thin layer's side, whose curves ask for edges
+// three times shorter than the walls around), a bubble can be left crowded
+// against a curve: too near its neighbours for any move to help, too near
+// the curve for a flip to help. Collapsing the edge from such a vertex `v`
+// to a neighbour `w` (which keeps its place: it may be a curve point) is kept
+// when the two vertices share no neighbour but the two across their edge
+// (the surface stays a disc around `w`), no triangle turns over, no new edge
+// is longer than 1.5 times `size` at its middle, and the smallest angle of
+// the triangles that change grows. Worst triangles first; returns the number
+// of collapses.
+template <class Point_3, class SizeFunction>
+std::size_t collapse_crowded_vertices(const std::vector<Point_3>& points,
+                                      std::vector<std::array<std::size_t, 3> >& triangles,
+                                      const std::vector<char>& fixed, const SizeFunction& size, double angle_bound)
+{
+  auto angle_of = [&](const std::array<std::size_t, 3>& t) {
+    return min_angle_degrees(points[t[0]], points[t[1]], points[t[2]]);
+  };
+  std::vector<std::pair<double, std::size_t> > poor;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const double a = angle_of(triangles[t]);
+    if(a < angle_bound) poor.push_back(std::make_pair(a, t));
+  }
+  if(poor.empty()) return 0;
+  std::sort(poor.begin(), poor.end());
+  std::unordered_map<std::size_t, std::vector<std::size_t> > incident;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(std::size_t v : triangles[t]) incident[v].push_back(t);
+  std::vector<char> dead(triangles.size(), 0);
+  auto neighbours = [&](std::size_t v) {
+    std::vector<std::size_t> n;
+    for(std::size_t t : incident[v])
+      for(std::size_t u : triangles[t])
+        if(u != v) n.push_back(u);
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+    return n;
+  };
+  std::size_t collapses = 0;
+  for(const auto& bad : poor)
+  {
+    if(dead[bad.second] || !(angle_of(triangles[bad.second]) < angle_bound)) continue;
+    double best_min = -1.;
+    std::size_t best_v = 0, best_w = 0;
+    for(std::size_t v : triangles[bad.second])
+    {
+      if(fixed[v]) continue;
+      const std::vector<std::size_t>& inc = incident[v];
+      double old_min = 180.;
+      for(std::size_t t : inc) old_min = (std::min)(old_min, angle_of(triangles[t]));
+      const std::vector<std::size_t> nv = neighbours(v);
+      for(std::size_t w : nv)
+      {
+        std::vector<std::size_t> across;
+        for(std::size_t t : inc)
+          if(std::find(triangles[t].begin(), triangles[t].end(), w) != triangles[t].end())
+            for(std::size_t u : triangles[t])
+              if(u != v && u != w) across.push_back(u);
+        if(across.size() != 2) continue;
+        std::sort(across.begin(), across.end());
+        const std::vector<std::size_t> nw = neighbours(w);
+        std::vector<std::size_t> common;
+        std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
+        if(common != across) continue;
+        double new_min = 180.;
+        bool ok = true;
+        for(std::size_t t : inc)
+        {
+          std::array<std::size_t, 3> tri = triangles[t];
+          if(std::find(tri.begin(), tri.end(), w) != tri.end()) continue; // goes away
+          const auto old_normal = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
+          for(std::size_t& u : tri)
+            if(u == v) u = w;
+          const auto normal = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
+          if(!(CGAL::to_double(normal * old_normal) > 0.5)) { ok = false; break; }
+          for(std::size_t u : tri)
+            if(u != w && CGAL::to_double(CGAL::squared_distance(points[u], points[w])) >
+                           2.25 * CGAL::square(size(CGAL::midpoint(points[u], points[w]))))
+              ok = false;
+          new_min = (std::min)(new_min, angle_of(tri));
+        }
+        if(ok && new_min > old_min + 1e-6 && new_min > best_min)
+        {
+          best_min = new_min;
+          best_v = v;
+          best_w = w;
+        }
+      }
+    }
+    if(best_min < 0.) continue;
+    const std::vector<std::size_t> inc = incident[best_v];
+    for(std::size_t t : inc)
+    {
+      std::array<std::size_t, 3>& tri = triangles[t];
+      if(std::find(tri.begin(), tri.end(), best_w) != tri.end())
+      {
+        dead[t] = 1;
+        for(std::size_t u : tri)
+          if(u != best_v)
+          {
+            std::vector<std::size_t>& l = incident[u];
+            l.erase(std::remove(l.begin(), l.end(), t), l.end());
+          }
+        continue;
+      }
+      for(std::size_t& u : tri)
+        if(u == best_v) u = best_w;
+      incident[best_w].push_back(t);
+    }
+    incident[best_v].clear();
+    ++collapses;
+  }
+  std::size_t n = 0;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    if(!dead[t]) triangles[n++] = triangles[t];
+  triangles.resize(n);
+  return collapses;
 }
 
 } // namespace internal
