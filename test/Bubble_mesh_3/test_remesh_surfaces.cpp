@@ -716,17 +716,21 @@ void test_collapse_crowded_vertex()
   assert(used.count(d) == 0 && used.count(c) == 1 && used.size() == 7);
 }
 
-// A layer 0.2 thick in the box [0,10] x [0,8] x [0,6], with a floor of the
-// thickness rule (0.6) three times its thickness: its sides on the box's
-// walls are strips 0.2 wide whose two long curves are sampled alike, about
-// 0.65 apart. Points facing each other cut the strip into right triangles of
-// atan(0.2 / 0.65) = 17 degrees; one side's points half-way between the
-// other's make isosceles ones of atan(0.4 / 0.65) = 32 degrees.
-void test_thin_layer_sides()
+// A layer `thickness` thick in the box [0,10] x [0,8] x [0,6], with a floor
+// of the thickness rule (0.6) well over its thickness: its sides on the
+// box's walls are strips whose two long curves are sampled alike.
+// - 0.2 thick, at the floor (about 0.65 apart): points facing each other cut
+//   the strip into right triangles of atan(0.2 / 0.65) = 17 degrees; one
+//   side's points half-way between the other's make isosceles ones of
+//   atan(0.4 / 0.65) = 32 degrees.
+// - 0.1 thick: at the floor even those would be 17 degrees; the strip's
+//   sides are sampled at 3.5 times its width instead (the sizing field's
+//   strip rule), and the half-way points make triangles of 30 degrees.
+void test_thin_layer_sides(double thickness)
 {
-  std::cout << "a layer 0.2 thick meeting the walls, with a floor of 0.6\n";
+  std::cout << "a layer " << thickness << " thick meeting the walls, with a floor of 0.6\n";
   Builder b;
-  const double z[4] = {0., 3., 3.2, 6.};
+  const double z[4] = {0., 3., 3. + thickness, 6.};
   const std::size_t regions[3] = {b.model.add_region("lower"), b.model.add_region("layer"), b.model.add_region("upper")};
   const std::size_t base = b.model.add_patch("base", 0, regions[0]), roof = b.model.add_patch("roof", 0, regions[2]);
   b.rectangle(base, Point(0, 0, 0), Point(10, 0, 0), Point(10, 8, 0), Point(0, 8, 0), Vector(0, 0, -1));
@@ -815,7 +819,8 @@ int main(int argc, char** argv)
   test_overhang();
   test_ribbon();
   test_collapse_crowded_vertex();
-  test_thin_layer_sides();
+  test_thin_layer_sides(0.2);
+  test_thin_layer_sides(0.1);
   test_real_models(std::vector<std::string>(argv + 1, argv + argc));
   std::cout << "all remesh_surfaces checks passed\n";
   return EXIT_SUCCESS;

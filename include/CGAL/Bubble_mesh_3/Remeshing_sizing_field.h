@@ -70,6 +70,12 @@ point of a patch. It is the smallest of
   most \f$ \theta \f$ = `curvature_angle` (22.5 degrees: 16 edges around a
   circle); without it a tunnel of radius 25 re-meshed at size 30 is a
   hexagonal tube and loses several percent of its volume;
+- the strip rule: on a curve, where another curve of one of its patches
+  runs parallel to it (within 10 degrees) without touching it, at a distance
+  \f$ w \f$ under \f$ h_{min} / 3.5 \f$ (a thin layer's side on the model's
+  walls), \f$ \max(h_{min} / 4, 3.5\, w) \f$: the re-meshing puts one side's
+  points half-way between the other's, and at that spacing the triangles
+  across reach 25 degrees;
 - with `refine_ribbons`, the ribbon rule: on the two curves of a patch that
   meet at a corner under 10 degrees, the distance across to the other one
   where it is at least a twentieth of \f$ h_{min} \f$ (one edge across a
@@ -654,6 +660,38 @@ private:
             add_source(Point_3(x.x(), x.y(), x.z()), (std::max)(minimum_size_, d / elements_across_));
           }
         }
+        // A strip: another curve of a patch of this one, parallel to it and not
+        // touching it, closer than the floor allows for (a thin layer's side on a
+        // wall). Its sides are sampled as densely as the sizes they ask for, as a
+        // ribbon's below.
+        if(elements_across_ > 0.)
+        {
+          const double narrow = minimum_size_ / strip_spacing_over_width;
+          for(double t = 0.; t < len;)
+          {
+            const SPoint x = a + (e - a) * (t / len);
+            const Bbox_3 box(x.x() - narrow, x.y() - narrow, x.z() - narrow, x.x() + narrow, x.y() + narrow,
+                             x.z() + narrow);
+            double across2 = narrow * narrow;
+            near_segments.clear();
+            stree.all_intersected_primitives(box, std::back_inserter(near_segments));
+            for(Segment_iterator it : near_segments)
+            {
+              const std::size_t d = segment_curve[std::size_t(it - segments.begin())];
+              if(std::binary_search(touching_curves.begin(), touching_curves.end(), d)) continue;
+              const std::vector<std::size_t>& dp = features.curves[d].patches;
+              if(std::find_first_of(curve.patches.begin(), curve.patches.end(), dp.begin(), dp.end()) == curve.patches.end())
+                continue;
+              // along this curve, not converging on it (a pinch-out, which the floor is for)
+              const SVector u = e - a, v = it->to_vector();
+              if(CGAL::square(u * v) < strip_parallel_cos2 * u.squared_length() * v.squared_length()) continue;
+              across2 = (std::min)(across2, CGAL::to_double(CGAL::squared_distance(x, *it)));
+            }
+            const double h = strip_spacing_over_width * std::sqrt(across2);
+            if(h < minimum_size_ && h >= strip_floor * minimum_size_) add_source(Point_3(x.x(), x.y(), x.z()), h);
+            t += 0.5 * (h < minimum_size_ ? (std::max)(h, strip_floor * minimum_size_) : minimum_size_);
+          }
+        }
         if(ribbon.empty()) continue;
         // Across a ribbon one edge makes good triangles. Its sides are sampled as densely
         // as the sizes they ask for (the grading would undo sparser samples), and its
@@ -694,6 +732,15 @@ private:
   // is narrower than this, is left to needles (a lens pinching out at 0.03 degrees would
   // otherwise ask for edges down to nothing)
   static constexpr double ribbon_floor = 0.05;
+  // A strip of width w narrower than the floor: its sides' points, placed
+  // half-way between each other's by the re-meshing, make triangles of
+  // atan(2 w / s) at a spacing s, at least 25 degrees up to s = 4.3 w. The
+  // strip's own floor, over minimum_edge_length, keeps a strip pinching out
+  // from asking for edges down to nothing; its sides are parallel within 10
+  // degrees (the squared cosine).
+  static constexpr double strip_spacing_over_width = 3.5;
+  static constexpr double strip_floor = 0.25;
+  static constexpr double strip_parallel_cos2 = 0.9698;
   static std::vector<std::vector<std::size_t> > ribbon_partners(const Geological_model_3<GeomTraits>& model,
                                                                 const Model_features& features)
   {

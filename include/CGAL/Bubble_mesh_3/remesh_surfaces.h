@@ -360,10 +360,14 @@ private:
   triangles under the bound (atan(w / s)); from t s / 2 up, points of one
   side half-way between those of the other make triangles that reach it
   (atan(2 w / s)). Nearer (a ribbon pinching out) that would not help, and
-  such strips are left as they are. Line by line, a curve piece nine in ten
-  of whose samples have such a strip to one other curve of a common patch
-  takes its samples half-way between that curve's points
-  (interleave_polyline_samples()). The other curve's points must stay where
+  such strips are left as they are (the sizing field's strip rule makes
+  the spacing of a thin layer's sides 3.5 times their width, so that they
+  are not). Line by line, in each curve piece, the other curve of a common
+  patch with points nearest to most samples is the piece's partner; where
+  the partner's points at such a width from the piece follow each other at
+  most two spacings apart (three or more, or all along the piece), the
+  piece's samples there go half-way between them
+  (interleave_polyline_samples()). The partner's points must stay where
   they are: kept points, or samples of a line before this one that was not
   moved, so that of two sides of a strip one moves.
   */
@@ -437,7 +441,7 @@ private:
         std::size_t partner = 0, votes = 0;
         for(const auto& v : samples_near)
           if(v.second > votes) { partner = v.first; votes = v.second; }
-        if(10 * votes < 9 * m) continue;
+        if(votes == 0) continue;
         std::sort(near.begin(), near.end());
         near.erase(std::unique(near.begin(), near.end()), near.end());
         std::vector<Point_3> facing;
@@ -450,14 +454,23 @@ private:
           if(a.second >= 0.5 * t * spacing && a.second < t * spacing && a.first > 0.6 * spacing &&
              a.first < length - 0.6 * spacing)
             arcs.push_back(a.first);
-        if(arcs.empty()) continue;
         std::sort(arcs.begin(), arcs.end());
-        double gap = (std::max)(arcs.front(), length - arcs.back());
-        for(std::size_t i = 0; i + 1 < arcs.size(); ++i) gap = (std::max)(gap, arcs[i + 1] - arcs[i]);
-        if(gap > 2. * spacing) continue; // the strip does not run along the whole piece
-        pieces[l][k].samples = interleave_polyline_samples(pts, piece.first, piece.last, arcs);
-        moved[l][k] = 1;
-        ++staggered;
+        // runs of points at most two spacings apart: where the strip runs along the piece
+        for(std::size_t i = 0; i < arcs.size();)
+        {
+          std::size_t j = i + 1;
+          while(j < arcs.size() && arcs[j] - arcs[j - 1] <= 2. * spacing) ++j;
+          const std::vector<double> run(arcs.begin() + std::ptrdiff_t(i), arcs.begin() + std::ptrdiff_t(j));
+          const bool whole = run.front() <= 2. * spacing && length - run.back() <= 2. * spacing;
+          if(run.size() >= 3 || whole)
+          {
+            pieces[l][k].samples =
+              interleave_polyline_samples(pts, piece.first, piece.last, pieces[l][k].samples, run, spacing);
+            moved[l][k] = 1;
+          }
+          i = j;
+        }
+        staggered += moved[l][k];
       }
     }
     return staggered;

@@ -138,23 +138,39 @@ std::vector<std::pair<double, double> > project_on_polyline(const std::vector<Po
   return result;
 }
 
-// New samples for `pts[first..last]` half-way between the arc lengths
-// `facing` (sorted, inside the piece) and the piece's ends. Two curves across
-// a strip narrower than their spacing are sampled alike, so their points face
-// each other and the strip is cut into right triangles with an angle of
-// atan(width / spacing), 16 degrees for a 2 m layer at a spacing of 7; with
-// one side's points half-way between the other's, the triangles are
-// isosceles with base angles of atan(2 width / spacing), 30 degrees there.
+// `samples` of `pts[first..last]`, with those along a strip replaced by
+// points half-way between the other side's points. `facing` are the arc
+// lengths of those points projected onto the piece (sorted, at most two
+// spacings apart). The samples within a spacing of the run's ends go;
+// the new points are half-way between consecutive ones of: the last sample
+// kept before the run (or the piece's start), the run, and the first one
+// kept after it (or the piece's end). Two curves across a strip narrower than
+// their spacing are sampled alike, so their points face each other and the
+// strip is cut into right triangles with an angle of atan(width / spacing),
+// 16 degrees for a 2 m layer at a spacing of 7; with one side's points
+// half-way between the other's, the triangles are isosceles with base angles
+// of atan(2 width / spacing), 30 degrees there.
 template <class Point_3>
 std::vector<Polyline_position> interleave_polyline_samples(const std::vector<Point_3>& pts, std::size_t first,
-                                                           std::size_t last, const std::vector<double>& facing)
+                                                           std::size_t last,
+                                                           const std::vector<Polyline_position>& samples,
+                                                           const std::vector<double>& facing, double spacing)
 {
   const Polyline_arc_length<Point_3> arc(pts, first, last);
-  std::vector<double> s(1, 0.);
-  s.insert(s.end(), facing.begin(), facing.end());
-  s.push_back(arc.total());
+  std::vector<double> before, after;
+  for(const Polyline_position& p : samples)
+  {
+    const double s = arc.arc_length_at(p);
+    if(s < facing.front() - spacing) before.push_back(s);
+    else if(s > facing.back() + spacing) after.push_back(s);
+  }
+  std::vector<double> run(1, before.empty() ? 0. : before.back());
+  run.insert(run.end(), facing.begin(), facing.end());
+  run.push_back(after.empty() ? arc.total() : after.front());
   std::vector<Polyline_position> result;
-  for(std::size_t k = 0; k + 1 < s.size(); ++k) result.push_back(arc.position_at(0.5 * (s[k] + s[k + 1])));
+  for(double s : before) result.push_back(arc.position_at(s));
+  for(std::size_t k = 0; k + 1 < run.size(); ++k) result.push_back(arc.position_at(0.5 * (run[k] + run[k + 1])));
+  for(double s : after) result.push_back(arc.position_at(s));
   return result;
 }
 
