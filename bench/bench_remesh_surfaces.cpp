@@ -89,6 +89,9 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
     if(a < r.angle_bound) small.push_back(std::make_pair(a, t));
   }
   std::sort(small.begin(), small.end());
+  std::cout << "    of the " << small.size() << " triangles under " << r.angle_bound << " deg, "
+            << r.number_of_small_angle_triangles_between_curve_points
+            << " have their three points on curves (the curve sampling sets them)\n";
   std::cout << "    triangles under " << r.angle_bound << " deg, worst first (angle, patch, centroid, edge lengths, "
             << "target at the centroid; the field's floor is " << field.minimum_size() << "):\n";
   for(std::size_t i = 0; i < small.size() && i < 40; ++i)

@@ -506,6 +506,19 @@ void check_remeshed(const Model& input, const Model& output, const BM::Surface_r
             << " forced by input corners)\n";
   assert(small == r.number_of_small_angle_triangles);
   if(strict_angles) assert(small == r.number_of_forced_small_angle_triangles);
+  // of those, the ones between three points of the output's curves
+  const BM::Model_features out_features = BM::detect_model_features(output);
+  std::vector<char> on_curve(output.number_of_points(), 0);
+  for(const BM::Model_features::Curve& c : out_features.curves)
+    for(std::size_t v : c.points) on_curve[v] = 1;
+  std::size_t between = 0;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+  {
+    const auto& tri = output.triangle(t);
+    if(min_angle(output, t) < 25. && on_curve[tri[0]] && on_curve[tri[1]] && on_curve[tri[2]]) ++between;
+  }
+  std::cout << "    " << between << " of them between three curve points\n";
+  assert(between == r.number_of_small_angle_triangles_between_curve_points);
   // edge lengths against the field
   const double share = share_within_size(output, field);
   std::cout << "    edges within [0.5, 1.5] of the target: " << 100. * share << " % (of the field given: "

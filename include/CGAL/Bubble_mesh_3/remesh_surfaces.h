@@ -82,6 +82,12 @@ struct Surface_remeshing_report
   /// of those, the triangles whose smallest angle sits at a curve point where
   /// the patch's own angle (between its two curve edges) is under the bound
   std::size_t number_of_forced_small_angle_triangles = 0;
+  /// of those, the triangles whose three points lie on curves (or on the
+  /// seams between a patch's charts): the curve sampling sets them (a strip
+  /// between two curves narrower than the size, as a fault strip between two
+  /// horizon cut lines), and no flip, move or collapse of the patch's points
+  /// can change them
+  std::size_t number_of_small_angle_triangles_between_curve_points = 0;
   double share_of_small_angle_triangles = 0.; ///< output triangles with an angle under the bound, share
   double share_of_edges_within_size = 0.;     ///< output edges with length in [0.5, 1.5] of the target there
   double input_share_of_edges_within_size = 0.; ///< the same for the input edges and the same targets
@@ -907,12 +913,16 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
   report.min_angle = 180.;
   report.number_of_small_angle_triangles = 0;
   report.number_of_forced_small_angle_triangles = 0;
+  report.number_of_small_angle_triangles_between_curve_points = 0;
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
   {
     const double a = min_angle_of(output, t);
     report.min_angle = (std::min)(report.min_angle, a);
     if(a >= bound) continue;
     ++report.number_of_small_angle_triangles;
+    bool all_fixed = true;
+    for(std::size_t v : output.triangle(t)) all_fixed = all_fixed && v < fixed.size() && fixed[v];
+    if(all_fixed) ++report.number_of_small_angle_triangles_between_curve_points;
     int k_min = 0;
     for(int k = 1; k < 3; ++k)
       if(corner_angle(t, k) < corner_angle(t, k_min)) k_min = k;
