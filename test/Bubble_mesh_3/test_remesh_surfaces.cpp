@@ -696,7 +696,7 @@ void test_ribbon()
 // around a free centre c, with a second free vertex d at 0.1 from the edge
 // H0 H1 (triangle d H0 H1 of 11.3 degrees). Collapsing d away leaves the six
 // equilateral triangles; with sizes too small for the edges that would make,
-// nothing changes.
+// nothing changes. Then two free points crowded together.
 void test_collapse_crowded_vertex()
 {
   std::cout << "a free vertex crowded against a curve edge\n";
@@ -717,16 +717,35 @@ void test_collapse_crowded_vertex()
     return m;
   };
   assert(smallest(tris) < 12.);
+  auto in_plane = [](const Point& q) { return Point(q.x(), q.y(), 0.); };
   // sizes of 0.5: the collapse would make edges of 1, twice the size
   std::vector<std::array<std::size_t, 3> > small_sizes = tris;
-  assert(BM::internal::collapse_crowded_vertices(pts, small_sizes, fixed, [](const Point&) { return 0.5; }, 25.) == 0);
+  assert(BM::internal::collapse_crowded_vertices(pts, small_sizes, fixed, [](const Point&) { return 0.5; }, in_plane, 25.) == 0);
   assert(small_sizes == tris);
-  assert(BM::internal::collapse_crowded_vertices(pts, tris, fixed, [](const Point&) { return 1.; }, 25.) == 1);
+  assert(BM::internal::collapse_crowded_vertices(pts, tris, fixed, [](const Point&) { return 1.; }, in_plane, 25.) == 1);
   std::cout << "  " << tris.size() << " triangles, smallest angle " << smallest(tris) << "\n";
   assert(tris.size() == 6 && smallest(tris) > 59.99);
   std::set<std::size_t> used;
   for(const auto& t : tris) used.insert(t.begin(), t.end());
   assert(used.count(d) == 0 && used.count(c) == 1 && used.size() == 7);
+
+  // two free points 0.2 apart about the centre: either one kept in place
+  // leaves the fan off-centre; both moved to their middle make it regular
+  pts.resize(6);
+  const std::size_t c1 = pts.size(), c2 = c1 + 1;
+  pts.push_back(Point(-0.1, 0, 0));
+  pts.push_back(Point(0.1, 0, 0));
+  fixed.assign(pts.size(), 1);
+  fixed[c1] = fixed[c2] = 0;
+  tris = {{{c2, 5, 0}}, {{c2, 0, 1}}, {{c2, 1, c1}}, {{c1, 1, 2}}, {{c1, 2, 3}}, {{c1, 3, 4}}, {{c2, c1, 4}}, {{c2, 4, 5}}};
+  assert(smallest(tris) < 15.);
+  assert(BM::internal::collapse_crowded_vertices(pts, tris, fixed, [](const Point&) { return 1.; }, in_plane, 25.) == 1);
+  std::cout << "  two free points: " << tris.size() << " triangles, smallest angle " << smallest(tris) << "\n";
+  assert(tris.size() == 6 && smallest(tris) > 59.99);
+  used.clear();
+  for(const auto& t : tris) used.insert(t.begin(), t.end());
+  const std::size_t kept = used.count(c1) ? c1 : c2;
+  assert(used.size() == 7 && CGAL::squared_distance(pts[kept], Point(0, 0, 0)) < 1e-24);
 }
 
 // A layer `thickness` thick in the box [0,10] x [0,8] x [0,6], with a floor

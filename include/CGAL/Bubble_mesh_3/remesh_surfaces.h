@@ -715,7 +715,8 @@ private:
           if(flips == 0 && moves == 0) break;
         }
         const std::size_t collapses =
-          collapse_crowded_vertices(out_points_, patch_out_[p], out_fixed_, Patch_size(sizing_, p), set_.angle_bound);
+          collapse_crowded_vertices(out_points_, patch_out_[p], out_fixed_, Patch_size(sizing_, p),
+                                    [&](const Point_3& q) { return patch_trees_[p].closest_point(q); }, set_.angle_bound);
         report_.number_of_collapsed_points += collapses;
         if(collapses == 0) break;
       }

@@ -217,17 +217,19 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
 // sizes change fast (next to a thin layer's side, whose curves ask for edges
 // three times shorter than the walls around), a bubble can be left crowded
 // against a curve: too near its neighbours for any move to help, too near
-// the curve for a flip to help. Collapsing the edge from such a vertex `v`
-// to a neighbour `w` (which keeps its place: it may be a curve point) is kept
-// when the two vertices share no neighbour but the two across their edge
-// (the surface stays a disc around `w`), no triangle turns over, no new edge
-// is longer than 1.5 times `size` at its middle, and the smallest angle of
-// the triangles that change grows. Worst triangles first; returns the number
-// of collapses.
-template <class Point_3, class SizeFunction>
-std::size_t collapse_crowded_vertices(const std::vector<Point_3>& points,
-                                      std::vector<std::array<std::size_t, 3> >& triangles,
-                                      const std::vector<char>& fixed, const SizeFunction& size, double angle_bound)
+// the curve for a flip to help. The edge from such a vertex `v` to a
+// neighbour `w` is collapsed into `w`, which keeps its place (it may be a
+// curve point) or, when it is free too, moves to the middle of the edge
+// (`project`ed onto the patch: two free points too near each other). A
+// collapse is kept when the two vertices share no neighbour but the two
+// across their edge (the surface stays a disc around `w`), no triangle turns
+// over, no new edge is longer than 1.5 times `size` at its middle, and the
+// smallest angle of the triangles that change grows. Worst triangles first;
+// returns the number of collapses.
+template <class Point_3, class SizeFunction, class Projection>
+std::size_t collapse_crowded_vertices(std::vector<Point_3>& points, std::vector<std::array<std::size_t, 3> >& triangles,
+                                      const std::vector<char>& fixed, const SizeFunction& size,
+                                      const Projection& project, double angle_bound)
 {
   auto angle_of = [&](const std::array<std::size_t, 3>& t) {
     return min_angle_degrees(points[t[0]], points[t[1]], points[t[2]]);
@@ -253,24 +255,49 @@ std::size_t collapse_crowded_vertices(const std::vector<Point_3>& points,
     n.erase(std::unique(n.begin(), n.end()), n.end());
     return n;
   };
+  auto contains = [&](std::size_t t, std::size_t u) {
+    return std::find(triangles[t].begin(), triangles[t].end(), u) != triangles[t].end();
+  };
+  // smallest angle of the triangles around v and w after the collapse of v into w
+  // placed at `at`, or -1 if the collapse is not allowed
+  auto collapsed_min = [&](std::size_t v, std::size_t w, const Point_3& at) {
+    double new_min = 180.;
+    std::vector<std::size_t> changed = incident[v];
+    if(!(at == points[w])) changed.insert(changed.end(), incident[w].begin(), incident[w].end());
+    for(std::size_t t : changed)
+    {
+      if(contains(t, v) && contains(t, w)) continue; // goes away
+      std::array<Point_3, 3> q;
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t u = triangles[t][k];
+        q[k] = (u == v || u == w) ? at : points[u];
+      }
+      const auto old_normal = remesh_unit_normal(points[triangles[t][0]], points[triangles[t][1]], points[triangles[t][2]]);
+      if(!(CGAL::to_double(remesh_unit_normal(q[0], q[1], q[2]) * old_normal) > 0.5)) return -1.;
+      for(int k = 0; k < 3; ++k)
+        if(!(q[k] == at) && CGAL::to_double(CGAL::squared_distance(q[k], at)) > 2.25 * CGAL::square(size(CGAL::midpoint(q[k], at))))
+          return -1.;
+      new_min = (std::min)(new_min, min_angle_degrees(q[0], q[1], q[2]));
+    }
+    return new_min;
+  };
   std::size_t collapses = 0;
   for(const auto& bad : poor)
   {
     if(dead[bad.second] || !(angle_of(triangles[bad.second]) < angle_bound)) continue;
     double best_min = -1.;
     std::size_t best_v = 0, best_w = 0;
+    Point_3 best_at;
     for(std::size_t v : triangles[bad.second])
     {
       if(fixed[v]) continue;
-      const std::vector<std::size_t>& inc = incident[v];
-      double old_min = 180.;
-      for(std::size_t t : inc) old_min = (std::min)(old_min, angle_of(triangles[t]));
       const std::vector<std::size_t> nv = neighbours(v);
       for(std::size_t w : nv)
       {
         std::vector<std::size_t> across;
-        for(std::size_t t : inc)
-          if(std::find(triangles[t].begin(), triangles[t].end(), w) != triangles[t].end())
+        for(std::size_t t : incident[v])
+          if(contains(t, w))
             for(std::size_t u : triangles[t])
               if(u != v && u != w) across.push_back(u);
         if(across.size() != 2) continue;
@@ -279,28 +306,22 @@ std::size_t collapse_crowded_vertices(const std::vector<Point_3>& points,
         std::vector<std::size_t> common;
         std::set_intersection(nv.begin(), nv.end(), nw.begin(), nw.end(), std::back_inserter(common));
         if(common != across) continue;
-        double new_min = 180.;
-        bool ok = true;
-        for(std::size_t t : inc)
+        std::vector<Point_3> places(1, points[w]);
+        if(!fixed[w]) places.push_back(project(CGAL::midpoint(points[v], points[w])));
+        for(const Point_3& at : places)
         {
-          std::array<std::size_t, 3> tri = triangles[t];
-          if(std::find(tri.begin(), tri.end(), w) != tri.end()) continue; // goes away
-          const auto old_normal = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
-          for(std::size_t& u : tri)
-            if(u == v) u = w;
-          const auto normal = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
-          if(!(CGAL::to_double(normal * old_normal) > 0.5)) { ok = false; break; }
-          for(std::size_t u : tri)
-            if(u != w && CGAL::to_double(CGAL::squared_distance(points[u], points[w])) >
-                           2.25 * CGAL::square(size(CGAL::midpoint(points[u], points[w]))))
-              ok = false;
-          new_min = (std::min)(new_min, angle_of(tri));
-        }
-        if(ok && new_min > old_min + 1e-6 && new_min > best_min)
-        {
-          best_min = new_min;
-          best_v = v;
-          best_w = w;
+          double old_min = 180.;
+          for(std::size_t t : incident[v]) old_min = (std::min)(old_min, angle_of(triangles[t]));
+          if(!(at == points[w]))
+            for(std::size_t t : incident[w]) old_min = (std::min)(old_min, angle_of(triangles[t]));
+          const double new_min = collapsed_min(v, w, at);
+          if(new_min > old_min + 1e-6 && new_min > best_min)
+          {
+            best_min = new_min;
+            best_v = v;
+            best_w = w;
+            best_at = at;
+          }
         }
       }
     }
@@ -309,7 +330,7 @@ std::size_t collapse_crowded_vertices(const std::vector<Point_3>& points,
     for(std::size_t t : inc)
     {
       std::array<std::size_t, 3>& tri = triangles[t];
-      if(std::find(tri.begin(), tri.end(), best_w) != tri.end())
+      if(contains(t, best_w))
       {
         dead[t] = 1;
         for(std::size_t u : tri)
@@ -325,6 +346,7 @@ std::size_t collapse_crowded_vertices(const std::vector<Point_3>& points,
       incident[best_w].push_back(t);
     }
     incident[best_v].clear();
+    points[best_w] = best_at;
     ++collapses;
   }
   std::size_t n = 0;
