@@ -608,6 +608,18 @@ private:
 
     std::vector<Triangle_iterator> near_triangles;
     std::vector<Segment_iterator> near_segments;
+    // squared distance from x to the nearest curve segment within `radius` (in
+    // its box) that `accept`s (segment, its curve), or radius squared
+    auto nearest_segment2 = [&](const SPoint& x, double radius, const auto& accept) {
+      const Bbox_3 box(x.x() - radius, x.y() - radius, x.z() - radius, x.x() + radius, x.y() + radius, x.z() + radius);
+      double best2 = radius * radius;
+      near_segments.clear();
+      stree.all_intersected_primitives(box, std::back_inserter(near_segments));
+      for(Segment_iterator it : near_segments)
+        if(accept(*it, segment_curve[std::size_t(it - segments.begin())]))
+          best2 = (std::min)(best2, CGAL::to_double(CGAL::squared_distance(x, *it)));
+      return best2;
+    };
     for(std::size_t c = 0; c < features.curves.size(); ++c)
     {
       const Model_features::Curve& curve = features.curves[c];
@@ -645,14 +657,9 @@ private:
             if(std::binary_search(touching_patches.begin(), touching_patches.end(), q)) continue;
             best2 = (std::min)(best2, CGAL::to_double(CGAL::squared_distance(x, *it)));
           }
-          near_segments.clear();
-          stree.all_intersected_primitives(box, std::back_inserter(near_segments));
-          for(Segment_iterator it : near_segments)
-          {
-            const std::size_t d = segment_curve[std::size_t(it - segments.begin())];
-            if(std::binary_search(touching_curves.begin(), touching_curves.end(), d)) continue;
-            best2 = (std::min)(best2, CGAL::to_double(CGAL::squared_distance(x, *it)));
-          }
+          best2 = (std::min)(best2, nearest_segment2(x, reach, [&](const SSegment&, std::size_t d) {
+                               return !std::binary_search(touching_curves.begin(), touching_curves.end(), d);
+                             }));
           if(best2 < reach * reach)
           {
             const double d = std::sqrt(best2);
@@ -667,26 +674,20 @@ private:
         if(elements_across_ > 0.)
         {
           const double narrow = minimum_size_ / strip_spacing_over_width;
+          const SVector u = e - a;
+          auto strip_side = [&](const SSegment& s, std::size_t d) {
+            if(std::binary_search(touching_curves.begin(), touching_curves.end(), d)) return false;
+            const std::vector<std::size_t>& dp = features.curves[d].patches;
+            if(std::find_first_of(curve.patches.begin(), curve.patches.end(), dp.begin(), dp.end()) == curve.patches.end())
+              return false;
+            // along this curve, not converging on it (a pinch-out, which the floor is for)
+            const SVector v = s.to_vector();
+            return !(CGAL::square(u * v) < strip_parallel_cos2 * u.squared_length() * v.squared_length());
+          };
           for(double t = 0.; t < len;)
           {
             const SPoint x = a + (e - a) * (t / len);
-            const Bbox_3 box(x.x() - narrow, x.y() - narrow, x.z() - narrow, x.x() + narrow, x.y() + narrow,
-                             x.z() + narrow);
-            double across2 = narrow * narrow;
-            near_segments.clear();
-            stree.all_intersected_primitives(box, std::back_inserter(near_segments));
-            for(Segment_iterator it : near_segments)
-            {
-              const std::size_t d = segment_curve[std::size_t(it - segments.begin())];
-              if(std::binary_search(touching_curves.begin(), touching_curves.end(), d)) continue;
-              const std::vector<std::size_t>& dp = features.curves[d].patches;
-              if(std::find_first_of(curve.patches.begin(), curve.patches.end(), dp.begin(), dp.end()) == curve.patches.end())
-                continue;
-              // along this curve, not converging on it (a pinch-out, which the floor is for)
-              const SVector u = e - a, v = it->to_vector();
-              if(CGAL::square(u * v) < strip_parallel_cos2 * u.squared_length() * v.squared_length()) continue;
-              across2 = (std::min)(across2, CGAL::to_double(CGAL::squared_distance(x, *it)));
-            }
+            const double across2 = nearest_segment2(x, narrow, strip_side);
             const double h = strip_spacing_over_width * std::sqrt(across2);
             if(h < minimum_size_ && h >= strip_floor * minimum_size_) add_source(Point_3(x.x(), x.y(), x.z()), h);
             t += 0.5 * (h < minimum_size_ ? (std::max)(h, strip_floor * minimum_size_) : minimum_size_);
@@ -700,13 +701,9 @@ private:
         for(double t = 0.; t < len;)
         {
           const SPoint x = a + (e - a) * (t / len);
-          const Bbox_3 box(x.x() - b, x.y() - b, x.z() - b, x.x() + b, x.y() + b, x.z() + b);
-          double across2 = b * b;
-          near_segments.clear();
-          stree.all_intersected_primitives(box, std::back_inserter(near_segments));
-          for(Segment_iterator it : near_segments)
-            if(std::binary_search(ribbon.begin(), ribbon.end(), segment_curve[std::size_t(it - segments.begin())]))
-              across2 = (std::min)(across2, CGAL::to_double(CGAL::squared_distance(x, *it)));
+          const double across2 = nearest_segment2(x, b, [&](const SSegment&, std::size_t d) {
+            return std::binary_search(ribbon.begin(), ribbon.end(), d);
+          });
           // narrower than the floor, smaller edges would only make more needles
           const double h = std::sqrt(across2);
           if(h >= floor && h < b) add_source(Point_3(x.x(), x.y(), x.z()), h);

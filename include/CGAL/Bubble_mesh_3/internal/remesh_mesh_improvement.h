@@ -292,6 +292,8 @@ std::size_t collapse_crowded_vertices(std::vector<Point_3>& points, std::vector<
     for(std::size_t v : triangles[bad.second])
     {
       if(fixed[v]) continue;
+      double old_min_v = 180.;
+      for(std::size_t t : incident[v]) old_min_v = (std::min)(old_min_v, angle_of(triangles[t]));
       const std::vector<std::size_t> nv = neighbours(v);
       for(std::size_t w : nv)
       {
@@ -310,8 +312,7 @@ std::size_t collapse_crowded_vertices(std::vector<Point_3>& points, std::vector<
         if(!fixed[w]) places.push_back(project(CGAL::midpoint(points[v], points[w])));
         for(const Point_3& at : places)
         {
-          double old_min = 180.;
-          for(std::size_t t : incident[v]) old_min = (std::min)(old_min, angle_of(triangles[t]));
+          double old_min = old_min_v;
           if(!(at == points[w]))
             for(std::size_t t : incident[w]) old_min = (std::min)(old_min, angle_of(triangles[t]));
           const double new_min = collapsed_min(v, w, at);
