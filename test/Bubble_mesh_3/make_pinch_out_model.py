@@ -53,11 +53,9 @@ def oriented(triangles, coords):
     return [tuple(t[::-1]) for t in tris] if volume < 0 else [tuple(t) for t in tris]
 
 
-def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
-    """Writes Gmsh's current surface mesh as a multi-body OBJ: each volume as a
-    closed body named body_name(x, z, volume) of its centre of mass, and the one
-    surface that bounds no volume as group free_name inside body free_inside."""
-    occ = gmsh.model.occ
+def gmsh_surface_mesh():
+    """Gmsh's current mesh as OBJ wants it: the node coordinates (numbered from
+    1 in that order) and a function giving a surface's triangles in that numbering."""
     tags, flat, _ = gmsh.model.mesh.getNodes()
     index = {int(t): i + 1 for i, t in enumerate(tags)}
     coords = [tuple(flat[3 * i:3 * i + 3]) for i in range(len(tags))]
@@ -67,6 +65,15 @@ def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
         n = nodes[0]
         return [tuple(index[int(n[k + m])] for m in range(3)) for k in range(0, len(n), 3)]
 
+    return coords, triangles
+
+
+def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
+    """Writes Gmsh's current surface mesh as a multi-body OBJ: each volume as a
+    closed body named body_name(x, z, volume) of its centre of mass, and the one
+    surface that bounds no volume as group free_name inside body free_inside."""
+    occ = gmsh.model.occ
+    coords, triangles = gmsh_surface_mesh()
     lines = ["# made by " + made_by]
     lines += ["v %.12g %.12g %.12g" % p for p in coords]
     bounding = set()
