@@ -512,13 +512,20 @@ private:
     for(std::uint32_t i : strays_)
     {
       const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
-      grid_.for_each_near_packed(xi, yi, zi, cutoff * ri, b, [&](std::size_t j, const double*) {
-        if(j == i || is_stray_[j]) return;
-        double fx = 0., fy = 0., fz = 0.;
-        add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1.,
-                 [&] { return cached_stray_weight(i, j); }, fx, fy, fz);
-        FX[i] += fx; FY[i] += fy; FZ[i] += fz;
-        if(j < n) { FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz; }
+      // (the cells beyond reach skipped: a small stray in a graded region would
+      // scan whole cells sized for the median radius; the others come in the same order)
+      grid_.for_each_row_in_reach_packed(xi, yi, zi, cutoff * ri, b,
+                                         [&](const std::uint32_t* items, const double*, std::size_t count) {
+        for(std::size_t k = 0; k < count; ++k)
+        {
+          const std::size_t j = items[k];
+          if(j == i || is_stray_[j]) continue;
+          double fx = 0., fy = 0., fz = 0.;
+          add_pair(xi - X[j], yi - Y[j], zi - Z[j], ri + R[j], i < j ? -1. : 1.,
+                   [&] { return cached_stray_weight(i, j); }, fx, fy, fz);
+          FX[i] += fx; FY[i] += fy; FZ[i] += fz;
+          if(j < n) { FX[j] -= fx; FY[j] -= fy; FZ[j] -= fz; }
+        }
       });
     }
     for(std::size_t a = 0; a < strays_.size(); ++a)
@@ -835,11 +842,16 @@ private:
                  az = (j < n ? rz_[j] : s_.z[j]) - zi;
     const double aj2 = ax * ax + ay * ay + az * az;
     double inside = 0.;
-    grid_.for_each_near_packed(xi + 0.5 * ax, yi + 0.5 * ay, zi + 0.5 * az, 0.5 * std::sqrt(aj2), 0.,
-                               [&](std::size_t k, const double* q) {
-      if(k == i || k == j) return;
-      const double kx = q[0] - xi, ky = q[1] - yi, kz = q[2] - zi;
-      inside = (std::min)(inside, shadow_depth(kx, ky, kz, kx * kx + ky * ky + kz * kz, ax, ay, az));
+    // (only bubbles inside the ball can lower `inside`: the cells beyond it are skipped)
+    grid_.for_each_row_in_reach_packed(xi + 0.5 * ax, yi + 0.5 * ay, zi + 0.5 * az, 0.5 * std::sqrt(aj2), 0.,
+                                       [&](const std::uint32_t* items, const double* q, std::size_t count) {
+      for(std::size_t e = 0; e < count; ++e, q += 4)
+      {
+        const std::size_t k = items[e];
+        if(k == i || k == j) continue;
+        const double kx = q[0] - xi, ky = q[1] - yi, kz = q[2] - zi;
+        inside = (std::min)(inside, shadow_depth(kx, ky, kz, kx * kx + ky * ky + kz * kz, ax, ay, az));
+      }
     });
     return weight_of(1. + 4. * inside / aj2);
   }
