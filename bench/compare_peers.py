@@ -15,6 +15,7 @@ model. A benchmark, not a test.
 """
 
 import argparse
+import concurrent.futures
 import glob
 import json
 import os
@@ -518,9 +519,14 @@ def main():
                         "are skipped (and say so) once it is used up (default: %(default)s)")
     p.add_argument("--meshers", default=",".join(DEFAULT_MESHERS),
                    help="comma-separated subset of: %s (default: all but bubble-keep)" % ",".join(MESHER_KEYS))
+    p.add_argument("--peer-jobs", type=int, default=min(2, os.cpu_count() or 1),
+                   help="peer runs (TetGen, Gmsh: one thread each) run this many at a time; our own runs, which "
+                        "use every core, always run alone (default: %(default)s, at most 2 and the number of CPUs)")
     p.add_argument("--bubble-args", default="", help="extra arguments for bubble_mesh_3 (quoted, e.g. '--threads 2')")
     args = p.parse_args()
     args.bubble_args = shlex.split(args.bubble_args)
+    if args.peer_jobs < 1:
+        fail("--peer-jobs takes a number >= 1, got %d" % args.peer_jobs)
 
     selected = [s.strip() for s in args.meshers.split(",") if s.strip()]
     bad = [s for s in selected if s not in MESHER_KEYS]
@@ -546,10 +552,14 @@ def main():
     contexts = [prepare_model(m, args, tools, out_dir) for m in models]
     done = [[] for _ in models]  # rows per model
     for phase in PHASES:
-        for i in phase_order(phase, contexts, done):
-            for key in phase:
-                if key in selected:
-                    done[i].append(run_row(contexts[i], key, args, tools, avail, deadline))
+        tasks = [(i, key) for i in phase_order(phase, contexts, done) for key in phase if key in selected]
+        # The peers run on one thread each (TetGen; Gmsh's 3D Delaunay by default), so
+        # their phases run --peer-jobs rows at a time; our runs take every core, one at a time.
+        jobs = args.peer_jobs if all(MESHERS[MESHER_KEYS.index(k)][1] != "bubble" for k in phase) else 1
+        with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+            futures = [(i, pool.submit(run_row, contexts[i], key, args, tools, avail, deadline)) for i, key in tasks]
+            for i, f in futures:
+                done[i].append(f.result())
     rows, svgs = [], {}
     for ctx, model_rows in zip(contexts, done):
         model_rows.sort(key=lambda r: MESHER_KEYS.index(r["key"]))
@@ -562,12 +572,14 @@ def main():
 
     info = {"command": command, "machine": os.uname().nodename, "cpus": os.cpu_count(),
             "load_average_at_start": load, "load_average_at_end": load_end, "timeout_s": args.timeout, "budget_s": args.budget, "total_s": total,
+            "peer_jobs": args.peer_jobs,
             "tetgen": shutil.which("tetgen"), "rows": rows, "histograms": svgs}
     with open(os.path.join(out_dir, "compare_peers.json"), "w") as f:
         json.dump(info, f, indent=1)
     md = ["# compare_peers\n", "Command: `%s` (total %.0f s, %s CPUs, load average %.1f at start and %.1f at the end, "
-          "time limit %g s per run, budget %g s)\n" % (command, total, os.cpu_count(), load or 0.0, load_end or 0.0,
-                                                     args.timeout, args.budget), "",
+          "time limit %g s per run, budget %g s, peer runs %d at a time)\n" % (
+              command, total, os.cpu_count(), load or 0.0, load_end or 0.0, args.timeout, args.budget,
+              args.peer_jobs), "",
           markdown_table(rows), ""]
     for n, s in svgs.items():
         sections = s[:-len(".svg")] + "_sections.svg"
