@@ -21,7 +21,7 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "test", "Bubble_mesh_3"))
-from make_pinch_out_model import gmsh_surface_mesh, oriented  # noqa: E402
+from make_pinch_out_model import write_bodies_and_free_surfaces  # noqa: E402
 
 
 def horizon_z(x, y):
@@ -61,35 +61,23 @@ def main():
     bounding = set()
     for _, v in gmsh.model.getEntities(3):
         bounding.update(abs(s) for _, s in gmsh.model.getBoundary([(3, v)], oriented=False))
-    faults = []
     for _, s in gmsh.model.getEntities(2):
-        if s in bounding:
-            continue
         b = occ.getBoundingBox(2, s)
-        if b[0] > -1e-6 and b[1] > -1e-6 and b[3] < 1000 + 1e-6 and b[4] < 800 + 1e-6:
-            faults.append(s)
-        else:  # the horizon's rim outside the box
-            occ.remove([(2, s)], recursive=True)
+        if s not in bounding and not (b[0] > -1e-6 and b[1] > -1e-6 and b[3] < 1000 + 1e-6 and b[4] < 800 + 1e-6):
+            occ.remove([(2, s)], recursive=True)  # the horizon's rim outside the box
     occ.synchronize()
     gmsh.option.setNumber("Mesh.MeshSizeMax", a.edge)
     gmsh.option.setNumber("Mesh.MeshSizeMin", a.edge / 4)
     gmsh.model.mesh.generate(2)
-    coords, triangles = gmsh_surface_mesh()
-    lines = ["# made by make_crossing_faults_model.py --edge %g --gap %g" % (a.edge, a.gap)]
-    lines += ["v %.12g %.12g %.12g" % p for p in coords]
-    for _, v in gmsh.model.getEntities(3):
-        _, _, z = occ.getCenterOfMass(3, v)
-        tris = []
-        for _, s in gmsh.model.getBoundary([(3, v)], oriented=False, recursive=False):
-            tris += triangles(abs(s))
-        lines.append("o " + ("lower" if z < 250 else "upper"))
-        lines += ["f %d %d %d" % t for t in oriented(tris, coords)]
-    for k, s in enumerate(faults):
-        x, y, z = occ.getCenterOfMass(2, s)
-        lines += ["g fault_%d" % k, "#@inside " + ("lower" if z < horizon_z(x, y) else "upper"), "#@patch fault_%d" % k]
-        lines += ["f %d %d %d" % t for t in triangles(s)]
-    with open(a.out, "w") as out:
-        out.write("\n".join(lines) + "\n")
+
+    def faults(free):  # each inside the body on its side of the horizon
+        groups = []
+        for k, s in enumerate(free):
+            x, y, z = occ.getCenterOfMass(2, s)
+            groups.append((s, "fault_%d" % k, "lower" if z < horizon_z(x, y) else "upper"))
+        return groups
+    write_bodies_and_free_surfaces(a.out, "make_crossing_faults_model.py --edge %g --gap %g" % (a.edge, a.gap),
+                                   lambda x, z, volume: "lower" if z < 250 else "upper", faults)
     gmsh.finalize()
 
 

@@ -68,10 +68,11 @@ def gmsh_surface_mesh():
     return coords, triangles
 
 
-def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
+def write_bodies_and_free_surfaces(path, made_by, body_name, free_groups):
     """Writes Gmsh's current surface mesh as a multi-body OBJ: each volume as a
-    closed body named body_name(x, z, volume) of its centre of mass, and the one
-    surface that bounds no volume as group free_name inside body free_inside."""
+    closed body named body_name(x, z, volume) of its centre of mass, and the
+    surfaces that bound no volume (faults ending inside a body), in Gmsh's
+    order, as the groups free_groups(tags) gives: (tag, group name, body it lies in)."""
     occ = gmsh.model.occ
     coords, triangles = gmsh_surface_mesh()
     lines = ["# made by " + made_by]
@@ -85,14 +86,22 @@ def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
             bounding.add(abs(s))
             tris += triangles(abs(s))
         lines += ["f %d %d %d" % t for t in oriented(tris, coords)]
-    free = [s for _, s in gmsh.model.getEntities(2) if s not in bounding]
-    if len(free) != 1:
-        raise SystemExit("%s: the %s should be one surface inside the %s body, got %d"
-                         % (made_by.split()[0], free_name, free_inside, len(free)))
-    lines += ["g " + free_name, "#@inside " + free_inside, "#@patch " + free_name]
-    lines += ["f %d %d %d" % t for t in triangles(free[0])]
+    for s, name, inside in free_groups([s for _, s in gmsh.model.getEntities(2) if s not in bounding]):
+        lines += ["g " + name, "#@inside " + inside, "#@patch " + name]
+        lines += ["f %d %d %d" % t for t in triangles(s)]
     with open(path, "w") as out:
         out.write("\n".join(lines) + "\n")
+
+
+def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
+    """write_bodies_and_free_surfaces() for a model with one surface that bounds no
+    volume: group free_name inside body free_inside."""
+    def one(free):
+        if len(free) != 1:
+            raise SystemExit("%s: the %s should be one surface inside the %s body, got %d"
+                             % (made_by.split()[0], free_name, free_inside, len(free)))
+        return [(free[0], free_name, free_inside)]
+    write_bodies_and_free_surfaces(path, made_by, body_name, one)
 
 
 def main():
