@@ -513,10 +513,9 @@ private:
     ball_cell_size_ = h;
     largest_ball_radius_ = largest;
     for(int d = 0; d < 3; ++d) ball_origin_[d] = bbox_[d] - largest - h;
-    std::vector<std::pair<std::uint64_t, std::uint32_t> > entries;
     const double pad = 0.5 * h; // so that a clearance of half a cell is exact
-    for(std::size_t i = 0; i < balls_.size(); ++i)
-    {
+    // f(key) for the cells that come within the pad of ball i (the corners of its box do not)
+    auto cells_of_ball = [&](std::size_t i, auto&& f) {
       const Ball& b = balls_[i];
       std::int64_t lo[3], hi[3];
       for(int d = 0; d < 3; ++d)
@@ -524,7 +523,6 @@ private:
         lo[d] = coordinate(b.c[d] - b.radius - pad, d);
         hi[d] = coordinate(b.c[d] + b.radius + pad, d);
       }
-      // only the cells that come within the pad of the ball (the corners of its box do not)
       const double reach = (b.radius + pad) * (1. + 1e-9) + 1e-9 * h;
       for(std::int64_t k = lo[2]; k <= hi[2]; ++k)
         for(std::int64_t j = lo[1]; j <= hi[1]; ++j)
@@ -538,11 +536,11 @@ private:
               const double o = (std::max)({c0 - b.c[d], 0., b.c[d] - c1});
               d2 += o * o;
             }
-            if(d2 <= reach * reach) entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+            if(d2 <= reach * reach) f(key(l, j, k));
           }
-    }
+    };
     std::unordered_map<std::uint64_t, Cell> cells;
-    fill_cell_lists(entries, ball_index_, cells, &Cell::balls);
+    fill_cell_lists(balls_.size(), cells_of_ball, ball_index_, cells, &Cell::balls);
     // the triangles' pad is a whole cell: distances are exact as far as with the coarser cells
     build_face_lists(h, cells);
     // an open-addressing table: a look-up is a multiplication and a probe or two
@@ -581,8 +579,11 @@ private:
     const double h = ball_cell_size_;
     face_pad_ = pad;
     faces_.resize(triangles_.size());
-    std::vector<std::pair<std::uint64_t, std::uint32_t> > entries;
     const double reach = pad + 0.5 * std::sqrt(3.) * h; // pad plus half a cell diagonal
+    // per face: its cell box and whether cells far from its plane can be left out
+    struct Listing { std::int64_t lo[3], hi[3]; double margin; bool planar; };
+    std::vector<Listing> listed;
+    std::vector<std::uint32_t> listed_face;
     for(std::size_t i = 0; i < triangles_.size(); ++i)
     {
       Face& f = faces_[i];
@@ -607,52 +608,106 @@ private:
       // a sliver of a triangle: its plane and corner regions are ill-conditioned, use its edges
       f.flat = !(n2 > 1e-20 * l2 * l2) ||
                (normal_[i][0] == 0. && normal_[i][1] == 0. && normal_[i][2] == 0.);
-      std::int64_t lo[3], hi[3];
-      double cells = 1.;
+      Listing li;
+      double cells_in_box = 1.;
       for(int d = 0; d < 3; ++d)
       {
-        lo[d] = coordinate(f.lo[d] - pad, d);
-        hi[d] = coordinate(f.hi[d] + pad, d);
-        cells *= double(hi[d] - lo[d] + 1);
+        li.lo[d] = coordinate(f.lo[d] - pad, d);
+        li.hi[d] = coordinate(f.hi[d] + pad, d);
+        cells_in_box *= double(li.hi[d] - li.lo[d] + 1);
       }
-      if(cells > 4096.) { wide_faces_.push_back(std::uint32_t(i)); continue; }
-      const double* n = normal_[i].data();
+      if(cells_in_box > 4096.) { wide_faces_.push_back(std::uint32_t(i)); continue; }
       // cells far from the plane are left out only when the unit normal is accurate: its
       // error, about 1e-16 l^2 / |ab x ac|, stays under 1e-10 here, and the margin below covers it
-      const bool planar = n2 > 1e-12 * l2 * l2;
-      const double margin = 1e-8 * (std::sqrt(l2) + reach + h);
-      for(std::int64_t k = lo[2]; k <= hi[2]; ++k)
-        for(std::int64_t j = lo[1]; j <= hi[1]; ++j)
-          for(std::int64_t l = lo[0]; l <= hi[0]; ++l)
+      li.planar = n2 > 1e-12 * l2 * l2;
+      li.margin = 1e-8 * (std::sqrt(l2) + reach + h);
+      listed.push_back(li);
+      listed_face.push_back(std::uint32_t(i));
+    }
+    // f(key) for the cells of the i-th listed face
+    auto cells_of_face = [&](std::size_t i, auto&& f) {
+      const Listing& li = listed[i];
+      const Face& face = faces_[listed_face[i]];
+      const double* n = normal_[listed_face[i]].data();
+      for(std::int64_t k = li.lo[2]; k <= li.hi[2]; ++k)
+        for(std::int64_t j = li.lo[1]; j <= li.hi[1]; ++j)
+          for(std::int64_t l = li.lo[0]; l <= li.hi[0]; ++l)
           {
-            if(planar)
+            if(li.planar)
             {
               const double c[3] = {ball_origin_[0] + (double(l) + 0.5) * h, ball_origin_[1] + (double(j) + 0.5) * h,
                                    ball_origin_[2] + (double(k) + 0.5) * h};
-              const double off = (c[0] - f.p[0][0]) * n[0] + (c[1] - f.p[0][1]) * n[1] + (c[2] - f.p[0][2]) * n[2];
-              if(std::abs(off) > reach + margin) continue;
+              const double off = (c[0] - face.p[0][0]) * n[0] + (c[1] - face.p[0][1]) * n[1] + (c[2] - face.p[0][2]) * n[2];
+              if(std::abs(off) > reach + li.margin) continue;
             }
-            entries.push_back(std::make_pair(key(l, j, k), std::uint32_t(i)));
+            f(key(l, j, k));
           }
-    }
-    fill_cell_lists(entries, face_index_, cells, &Cell::faces);
+    };
+    fill_cell_lists(listed.size(), cells_of_face, face_index_, cells, &Cell::faces);
+    for(std::uint32_t& t : face_index_) t = listed_face[t];
   }
 
-  // (cell key, item) pairs become `index`, the items sorted by cell, and in
-  // each cell the range of its items there (the member `list` of Cell)
-  static void fill_cell_lists(std::vector<std::pair<std::uint64_t, std::uint32_t> >& entries,
-                              std::vector<std::uint32_t>& index, std::unordered_map<std::uint64_t, Cell>& cells,
-                              Cell_range Cell::*list)
+  // The items 0..n-1 filed by cell: `cells_of(i, f)` calls f(key) for each cell of item i.
+  // `index` gets the items sorted by cell, increasing in each cell, and each cell the range
+  // of its items there (the member `list` of Cell). Counted first and sorted by a stable
+  // radix sort on the keys alone: a large region files some ten million entries, which a
+  // growing vector of pairs and a comparison sort made a good part of the set-up.
+  template <class CellsOf>
+  void fill_cell_lists(std::size_t n, const CellsOf& cells_of, std::vector<std::uint32_t>& index,
+                       std::unordered_map<std::uint64_t, Cell>& cells, Cell_range Cell::*list) const
   {
-    std::sort(entries.begin(), entries.end());
-    index.resize(entries.size());
-    for(std::size_t e = 0; e < entries.size(); ++e)
+    std::size_t count = 0;
+    for(std::size_t i = 0; i < n; ++i) cells_of(i, [&count](std::uint64_t) { ++count; });
+    CGAL_assertion(count < (std::numeric_limits<std::uint32_t>::max)());
+    // two halves each, for the sort's passes; left uninitialised (no pass of zeros)
+    std::unique_ptr<std::uint64_t[]> keys(new std::uint64_t[2 * count + 1]);
+    std::unique_ptr<std::uint32_t[]> items(new std::uint32_t[2 * count + 1]);
+    std::size_t filed = 0;
+    for(std::size_t i = 0; i < n; ++i)
+      cells_of(i, [&](std::uint64_t k) { keys[filed] = k; items[filed] = std::uint32_t(i); ++filed; });
+    // items were filed in increasing order: still so in each cell
+    const std::size_t half = sort_by_key(keys.get(), items.get(), count);
+    const std::uint64_t* sorted = keys.get() + half;
+    Cell_range* range = nullptr;
+    for(std::size_t e = 0; e < count; ++e)
     {
-      index[e] = entries[e].second;
-      Cell_range& range = cells[entries[e].first].*list;
-      if(e == 0 || entries[e].first != entries[e - 1].first) range = Cell_range(std::uint32_t(e), std::uint32_t(e));
-      ++range.second;
+      if(e == 0 || sorted[e] != sorted[e - 1])
+      {
+        range = &(cells[sorted[e]].*list);
+        *range = Cell_range(std::uint32_t(e), std::uint32_t(e));
+      }
+      ++range->second;
     }
+    keys.reset(); // before the copy below: the peak stays at the sort's
+    index.assign(items.get() + half, items.get() + half + count);
+  }
+
+  // Stable LSD radix sort of keys[0, n) (16 bits a pass, passes where every key has the
+  // same digit skipped), items alongside; each array holds 2n, its second half the
+  // passes' other buffer. Returns where the sorted keys start: 0 or n.
+  static std::size_t sort_by_key(std::uint64_t* keys, std::uint32_t* items, std::size_t n)
+  {
+    if(n < 2) return 0;
+    std::uint64_t varying = 0;
+    for(std::size_t e = 1; e < n; ++e) varying |= keys[e] ^ keys[0];
+    std::vector<std::size_t> start(std::size_t(1) << 16);
+    std::size_t from = 0, to = n;
+    for(int shift = 0; shift < 64; shift += 16)
+    {
+      if(((varying >> shift) & 0xFFFFu) == 0) continue;
+      std::fill(start.begin(), start.end(), std::size_t(0));
+      for(std::size_t e = from; e < from + n; ++e) ++start[(keys[e] >> shift) & 0xFFFFu];
+      std::size_t sum = to;
+      for(std::size_t& s : start) { const std::size_t c = s; s = sum; sum += c; }
+      for(std::size_t e = from; e < from + n; ++e)
+      {
+        const std::size_t at = start[(keys[e] >> shift) & 0xFFFFu]++;
+        keys[at] = keys[e];
+        items[at] = items[e];
+      }
+      std::swap(from, to);
+    }
+    return from;
   }
 
   const Cell* cell_at(const double p[3]) const
