@@ -12,7 +12,8 @@ between bodies that no horizon separates from the box walls.
 usage: make_salt_dome_model.py OUT.obj [--edge H] [--height Z]
   --edge H    largest triangle edge (default 40)
   --height Z  half height of the salt ellipsoid, centred at z = 120 (default 288;
-              from 212 up the dome's top stays under the box's top)
+              from 212 its top rises above the upper horizon, under 380 it stays
+              under the box's top)
 """
 import argparse
 import math
@@ -51,7 +52,18 @@ def main():
     salt = occ.intersect([(3, salt)], [(3, clip)])[0][0][1]
     _, children = occ.fragment([(3, box)], horizons + [(3, salt)])
     occ.synchronize()
-    salt_centres = [occ.getCenterOfMass(3, t) for _, t in children[-1]]
+    salt = set(t for _, t in children[-1])
+    # the three layers and the three salt bodies, each named by its place in z (the
+    # horizons are tilted: a low dome's cap may lie under z = 330)
+    names = {}
+    for prefix, tags in (("salt_", [t for _, t in gmsh.model.getEntities(3) if t in salt]),
+                         ("layer_", [t for _, t in gmsh.model.getEntities(3) if t not in salt])):
+        if len(tags) != 3:
+            raise SystemExit("make_salt_dome_model: %d %sbodies, 3 expected" % (len(tags), prefix))
+        tags.sort(key=lambda t: occ.getCenterOfMass(3, t)[2])
+        for t, level in zip(tags, ("lower", "middle", "upper")):
+            x, _, z = occ.getCenterOfMass(3, t)
+            names[(x, z)] = prefix + level
     # the horizons' parts outside the box bound nothing
     for _, s in gmsh.model.getEntities(2):
         if len(gmsh.model.getAdjacencies(2, s)[0]) == 0:
@@ -62,9 +74,7 @@ def main():
 
     def body_name(x, z, volume):
         del volume
-        inside = any(abs(x - c[0]) + abs(z - c[2]) < 1e-6 * 1000. for c in salt_centres)
-        level = "lower" if z < 170. else ("middle" if z < 330. else "upper")
-        return ("salt_" if inside else "layer_") + level
+        return names[(x, z)]
 
     def no_free_surface(free):
         if free:

@@ -660,11 +660,23 @@ private:
     for(std::size_t i = 0; i < n; ++i) cells_of(i, [&count](std::uint64_t) { ++count; });
     CGAL_assertion(count < (std::numeric_limits<std::uint32_t>::max)());
     // two halves each, for the sort's passes; left uninitialised (no pass of zeros)
-    std::unique_ptr<std::uint64_t[]> keys(new std::uint64_t[2 * count + 1]);
-    std::unique_ptr<std::uint32_t[]> items(new std::uint32_t[2 * count + 1]);
-    std::size_t filed = 0;
-    for(std::size_t i = 0; i < n; ++i)
-      cells_of(i, [&](std::uint64_t k) { keys[filed] = k; items[filed] = std::uint32_t(i); ++filed; });
+    std::unique_ptr<std::uint64_t[]> keys;
+    std::unique_ptr<std::uint32_t[]> items;
+    for(;;)
+    {
+      keys.reset(new std::uint64_t[2 * count + 1]);
+      items.reset(new std::uint32_t[2 * count + 1]);
+      std::size_t filed = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        cells_of(i, [&](std::uint64_t k) {
+          if(filed < count) { keys[filed] = k; items[filed] = std::uint32_t(i); }
+          ++filed;
+        });
+      // the two passes are compiled apart: should floating-point contraction make their
+      // cell tests differ, file again at the size filed (the same code gives the same count)
+      if(filed == count) break;
+      count = filed;
+    }
     // items were filed in increasing order: still so in each cell
     const std::size_t half = sort_by_key(keys.get(), items.get(), count);
     const std::uint64_t* sorted = keys.get() + half;
