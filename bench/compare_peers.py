@@ -569,8 +569,9 @@ def main():
         drawn = [pool.submit(draw_histograms, ctx, model_rows, args, tools, out_dir)
                  for ctx, model_rows in zip(contexts, done)]
         for ctx, f in zip(contexts, drawn):
-            if f.result():
-                svgs[ctx["name"]] = f.result()
+            svg = f.result()
+            if svg:
+                svgs[ctx["name"]] = svg
     total = time.perf_counter() - start
     load_end = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
 

@@ -581,9 +581,8 @@ private:
     faces_.resize(triangles_.size());
     const double reach = pad + 0.5 * std::sqrt(3.) * h; // pad plus half a cell diagonal
     // per face: its cell box and whether cells far from its plane can be left out
-    struct Listing { std::int64_t lo[3], hi[3]; double margin; bool planar; };
+    struct Listing { std::uint32_t face; std::int64_t lo[3], hi[3]; double margin; bool planar; };
     std::vector<Listing> listed;
-    std::vector<std::uint32_t> listed_face;
     for(std::size_t i = 0; i < triangles_.size(); ++i)
     {
       Face& f = faces_[i];
@@ -609,6 +608,7 @@ private:
       f.flat = !(n2 > 1e-20 * l2 * l2) ||
                (normal_[i][0] == 0. && normal_[i][1] == 0. && normal_[i][2] == 0.);
       Listing li;
+      li.face = std::uint32_t(i);
       double cells_in_box = 1.;
       for(int d = 0; d < 3; ++d)
       {
@@ -622,13 +622,12 @@ private:
       li.planar = n2 > 1e-12 * l2 * l2;
       li.margin = 1e-8 * (std::sqrt(l2) + reach + h);
       listed.push_back(li);
-      listed_face.push_back(std::uint32_t(i));
     }
     // f(key) for the cells of the i-th listed face
     auto cells_of_face = [&](std::size_t i, auto&& f) {
       const Listing& li = listed[i];
-      const Face& face = faces_[listed_face[i]];
-      const double* n = normal_[listed_face[i]].data();
+      const Face& face = faces_[li.face];
+      const double* n = normal_[li.face].data();
       for(std::int64_t k = li.lo[2]; k <= li.hi[2]; ++k)
         for(std::int64_t j = li.lo[1]; j <= li.hi[1]; ++j)
           for(std::int64_t l = li.lo[0]; l <= li.hi[0]; ++l)
@@ -644,22 +643,23 @@ private:
           }
     };
     fill_cell_lists(listed.size(), cells_of_face, face_index_, cells, &Cell::faces);
-    for(std::uint32_t& t : face_index_) t = listed_face[t];
+    for(std::uint32_t& t : face_index_) t = listed[t].face;
   }
 
   // The items 0..n-1 filed by cell: `cells_of(i, f)` calls f(key) for each cell of item i.
   // `index` gets the items sorted by cell, increasing in each cell, and each cell the range
-  // of its items there (the member `list` of Cell). Counted first and sorted by a stable
-  // radix sort on the keys alone: a large region files some ten million entries, which a
-  // growing vector of pairs and a comparison sort made a good part of the set-up.
+  // of its items there (the member `list` of Cell). Counted by a first pass, filed by a
+  // second into arrays of that size, and sorted by a stable radix sort on the keys alone:
+  // a large region files some ten million entries, which a growing vector of pairs and a
+  // comparison sort made a good part of the set-up.
   template <class CellsOf>
   void fill_cell_lists(std::size_t n, const CellsOf& cells_of, std::vector<std::uint32_t>& index,
                        std::unordered_map<std::uint64_t, Cell>& cells, Cell_range Cell::*list) const
   {
+    // Each pass files what fits and counts all: the first (room for none) counts, the
+    // second files them all. Both run the same code, so they agree.
+    // Two halves each, for the sort's passes; left uninitialised (no pass of zeros).
     std::size_t count = 0;
-    for(std::size_t i = 0; i < n; ++i) cells_of(i, [&count](std::uint64_t) { ++count; });
-    CGAL_assertion(count < (std::numeric_limits<std::uint32_t>::max)());
-    // two halves each, for the sort's passes; left uninitialised (no pass of zeros)
     std::unique_ptr<std::uint64_t[]> keys;
     std::unique_ptr<std::uint32_t[]> items;
     for(;;)
@@ -672,11 +672,10 @@ private:
           if(filed < count) { keys[filed] = k; items[filed] = std::uint32_t(i); }
           ++filed;
         });
-      // the two passes are compiled apart: should floating-point contraction make their
-      // cell tests differ, file again at the size filed (the same code gives the same count)
       if(filed == count) break;
       count = filed;
     }
+    CGAL_assertion(count < (std::numeric_limits<std::uint32_t>::max)());
     // items were filed in increasing order: still so in each cell
     const std::size_t half = sort_by_key(keys.get(), items.get(), count);
     const std::uint64_t* sorted = keys.get() + half;
