@@ -62,6 +62,7 @@ const char* usage =
   "                            [--repulsive] [--by-wall]\n"
   "                            [--cell-edge-factor F] [--graded-cells G]\n"
   "                            [--damping C] [--resting R] [--paper-overlap-ratio]\n"
+  "                            [--paper-dynamics]\n"
   "\n"
   "throughput  the bundled layered model (make_layered_model) with surface triangles of\n"
   "            longest edge E (default 12, for about 200k interior bubbles): surface\n"
@@ -88,8 +89,9 @@ const char* usage =
   "            --graded-cells passes place_initial_bubbles()'s graded_cell_factor (cells\n"
   "            that follow the sizing field; default: its own, as the program; 0: the\n"
   "            paper's lattice, whose edge --cell-edge-factor scales, default 1).\n"
-  "            --damping passes relax_bubbles()'s\n"
-  "            damping c (default: its own, 2 sqrt(m k) = 2 with m = k = 1).\n"
+  "            --paper-dynamics relaxes with METHOD.md's damped dynamics (Heun's\n"
+  "            scheme, inertial_relaxation(false)) instead of FIRE; --damping passes\n"
+  "            its damping c (default: its own, 2 sqrt(m k) = 2 with m = k = 1).\n"
   "            --resting passes its resting_displacement_ratio (default: its own;\n"
   "            0: every bubble moves at every step). Bubble-steps count moved bubbles.\n"
   "            --paper-overlap-ratio: population control with METHOD.md's ratio as it\n"
@@ -311,7 +313,7 @@ void print_wall_classes(const Model& m, const std::vector<Bubble>& interior, con
 }
 
 int alpha_table(const std::vector<std::string>& paths, std::size_t threads, double skin, bool print_rounds,
-                bool remesh, int planar, double tilted_factor, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting,
+                bool remesh, int planar, double tilted_factor, bool repulsive, bool by_wall, double cell_edge_factor, double graded, double damping, double resting, bool paper_dynamics,
                 bool paper_ratio)
 {
   std::ostringstream table;
@@ -375,8 +377,8 @@ int alpha_table(const std::vector<std::string>& paths, std::size_t threads, doub
     clock.print_rounds = print_rounds;
     const std::string load = load_average();
     const double c0 = cpu_seconds();
-    const auto np = params::solid_angle_overlap_ratio(!paper_ratio, params::wall_overlap_ratio(!paper_ratio, params::number_of_threads(
-      threads, params::resting_displacement_ratio(resting, params::neighbor_skin(skin, params::visitor(std::ref(clock)))))));
+    const auto np = params::inertial_relaxation(!paper_dynamics, params::solid_angle_overlap_ratio(!paper_ratio, params::wall_overlap_ratio(!paper_ratio, params::number_of_threads(
+      threads, params::resting_displacement_ratio(resting, params::neighbor_skin(skin, params::visitor(std::ref(clock))))))));
     const auto relax = [&](const auto& with) {
       return repulsive ? BM::relax_bubbles(m, surface, interior, sizing, params::force_law(BM::Repulsive_bubble_force(), with))
                        : BM::relax_bubbles(m, surface, interior, sizing, with);
@@ -470,7 +472,7 @@ int main(int argc, char** argv)
   std::vector<double> skins{BM::internal::Dynamics_settings().skin}; // relax_bubbles()'s default
   std::vector<std::size_t> threads = alpha ? std::vector<std::size_t>{1} : std::vector<std::size_t>{1, 2};
   std::vector<std::string> models;
-  bool print_rounds = false, remesh = false, repulsive = false, by_wall = false, paper_ratio = false;
+  bool print_rounds = false, remesh = false, repulsive = false, by_wall = false, paper_ratio = false, paper_dynamics = false;
   int planar = 0; // 1: retriangulate_planar_patches() defaults, 2: axis planes only
   double tilted_factor = BM::default_tilted_size_factor; // its tilted_size_factor
   for(int i = 2; i < argc; ++i)
@@ -499,6 +501,7 @@ int main(int argc, char** argv)
     else if(a == "--resting" && alpha && has_value) resting = std::atof(argv[++i]);
     else if(a == "--remesh-surfaces" && alpha) remesh = true;
     else if(a == "--paper-overlap-ratio" && alpha) paper_ratio = true;
+    else if(a == "--paper-dynamics" && alpha) paper_dynamics = true;
     else if(a == "--planar" && alpha) planar = 1;
     else if(a == "--planar-axis-only" && alpha) planar = 2;
     else if(a == "--tilted-size-factor" && alpha && has_value)
@@ -533,5 +536,5 @@ int main(int argc, char** argv)
   std::cout << "\n" << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, load " << load_average() << std::endl;
   if(!alpha) return throughput(edge_length, steps, warmup, threads, skins);
   if(models.empty()) models = default_models(argv[0]);
-  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, tilted_factor, repulsive, by_wall, cell_edge_factor, graded, damping, resting, paper_ratio);
+  return alpha_table(models, threads.front(), skins.front(), print_rounds, remesh, planar, tilted_factor, repulsive, by_wall, cell_edge_factor, graded, damping, resting, paper_dynamics, paper_ratio);
 }

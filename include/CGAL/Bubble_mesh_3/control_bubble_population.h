@@ -22,6 +22,7 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -80,6 +81,31 @@ std::pair<double, double> deterministic_sum_and_max(std::size_t n, const F& valu
   return std::make_pair(s, m);
 }
 
+/// sums of N per-index values, bit-identical for any number of threads
+template <class ConcurrencyTag, std::size_t N, class F>
+std::array<double, N> deterministic_sums(std::size_t n, const F& values)
+{
+  const std::size_t nb = (n + reduction_block - 1) / reduction_block;
+  std::vector<std::array<double, N> > partial(nb);
+  for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
+    for(std::size_t b = b0; b < b1; ++b)
+    {
+      std::array<double, N> s{};
+      const std::size_t e = (std::min)(n, (b + 1) * reduction_block);
+      for(std::size_t i = b * reduction_block; i < e; ++i)
+      {
+        const std::array<double, N> v = values(i);
+        for(std::size_t k = 0; k < N; ++k) s[k] += v[k];
+      }
+      partial[b] = s;
+    }
+  });
+  std::array<double, N> s{};
+  for(std::size_t b = 0; b < nb; ++b)
+    for(std::size_t k = 0; k < N; ++k) s[k] += partial[b][k];
+  return s;
+}
+
 // ---- settings -----------------------------------------------------------------
 
 struct Dynamics_settings
@@ -103,6 +129,7 @@ struct Dynamics_settings
   double max_step = 0.125;
   double radius_update = 0.1;
   double rest_ratio = 0.25;
+  bool inertial = true;
   std::size_t threads = 0;
   Confinement_settings confinement;
 };
@@ -130,6 +157,7 @@ Dynamics_settings dynamics_settings(const NP& np, double stiffness)
   s.population_rounds = choose_parameter(get_parameter(np, internal_np::number_of_population_rounds), s.population_rounds);
   s.population_tolerance = choose_parameter(get_parameter(np, internal_np::population_tolerance), s.population_tolerance);
   s.rest_ratio = choose_parameter(get_parameter(np, internal_np::resting_displacement_ratio), s.rest_ratio);
+  s.inertial = choose_parameter(get_parameter(np, internal_np::inertial_relaxation), s.inertial);
   s.insertion_clearance = choose_parameter(get_parameter(np, internal_np::insertion_clearance), s.insertion_clearance);
   s.skin = choose_parameter(get_parameter(np, internal_np::neighbor_skin), s.skin);
   s.max_step = choose_parameter(get_parameter(np, internal_np::max_step_ratio), s.max_step);

@@ -45,6 +45,7 @@ enum neighbor_skin_t { neighbor_skin };
 enum max_step_ratio_t { max_step_ratio };
 enum radius_update_ratio_t { radius_update_ratio };
 enum resting_displacement_ratio_t { resting_displacement_ratio };
+enum inertial_relaxation_t { inertial_relaxation };
 enum diametral_ball_margin_t { diametral_ball_margin };
 enum max_protected_ball_ratio_t { max_protected_ball_ratio };
 enum surface_offset_ratio_t { surface_offset_ratio };
@@ -98,6 +99,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, radius_update_ratio)
 /// moved) until a bubble near it moves more, or the next of the full steps that come every 50 (default 0.25;
 /// 0: every bubble moves at every step)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, resting_displacement_ratio)
+/// relax with FIRE, the fast inertial relaxation engine: no damping, velocities turned towards the forces,
+/// a longer step while the motion goes downhill, a stop when it goes uphill (default `true`; `false`:
+/// METHOD.md's damped dynamics m x'' + c x' = F, integrated by Heun's scheme)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, inertial_relaxation)
 /// bubble centres stay farther than (1 + margin) times a diametral ball's radius from its centre (default 0.02)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, diametral_ball_margin)
 /// diametral balls wider than this times the local surface-bubble radius are not protected (default 3)
