@@ -276,19 +276,29 @@ def mesher_output(kind, workdir, base):
     return os.path.join(workdir, base + ".mesh")
 
 
-# The runs go in phases over all models, quickest first, so that when the time
-# budget runs out it cuts the slowest runs (TetGen's quality refinement, our
-# re-meshed runs) of every model rather than every run of the last models.
-PHASES = [["tetgen-pA", "tetgen-pYA", "gmsh"], ["bubble", "bubble-keep"], ["tetgen-pq"], ["bubble-remesh"]]
+# The runs go in phases over all models, so that when the time budget runs out
+# it cuts the slowest runs (our re-meshed runs) of every model rather than every
+# run of the last models. The peers (one thread each) share one phase, run
+# --peer-jobs at a time: a peer run that hangs until the time limit (TetGen -pq
+# on modelA2, -pYA on modelA5) then holds one core while the others go on.
+PEER_KEYS = ["tetgen-pq", "tetgen-pYA", "tetgen-pA", "gmsh"]
+PHASES = [PEER_KEYS, ["bubble", "bubble-keep"], ["bubble-remesh"]]
 
 
 def phase_order(phase, contexts, done):
-    """The models in the order a phase visits them. The re-meshed runs take
+    """The models in the order a phase visits them. The peers go largest model
+    first (by input triangles): the runs likely to take longest start first, so
+    that the short ones fill the other core beside them. The re-meshed runs take
     5-15 times the surfaces-kept run of the same model: they go cheapest first
     (by that run's time, else by input triangles), so that what is left of the
     budget is spent on the rows that can finish, not on a large model killed
     half-way while a small one is skipped."""
     order = list(range(len(contexts)))
+
+    def triangles(i):
+        return contexts[i]["triangles"] if contexts[i]["triangles"] is not None else float("inf")
+    if phase is PEER_KEYS:
+        return sorted(order, key=lambda i: -triangles(i))
     if "bubble-remesh" not in phase:
         return order
 
@@ -296,8 +306,17 @@ def phase_order(phase, contexts, done):
         kept = [r for r in done[i] if r["key"] == "bubble" and r["status"] == "ok" and r["time_s"] is not None]
         if kept:
             return (0, kept[0]["time_s"])
-        return (1, contexts[i]["triangles"] if contexts[i]["triangles"] is not None else float("inf"))
+        return (1, triangles(i))
     return sorted(order, key=cost)
+
+
+def phase_tasks(phase, contexts, done, selected):
+    """(model, mesher) pairs of a phase in the order they start: the peers mesher by
+    mesher (TetGen's quality refinement, the slowest, first), our runs model by model."""
+    order = phase_order(phase, contexts, done)
+    if phase is PEER_KEYS:
+        return [(i, key) for key in phase if key in selected for i in order]
+    return [(i, key) for i in order for key in phase if key in selected]
 
 
 def prepare_model(model, args, tools, out_dir):
@@ -552,10 +571,10 @@ def main():
     contexts = [prepare_model(m, args, tools, out_dir) for m in models]
     done = [[] for _ in models]  # rows per model
     for phase in PHASES:
-        tasks = [(i, key) for i in phase_order(phase, contexts, done) for key in phase if key in selected]
+        tasks = phase_tasks(phase, contexts, done, selected)
         # The peers run on one thread each (TetGen; Gmsh's 3D Delaunay by default), so
-        # their phases run --peer-jobs rows at a time; our runs take every core, one at a time.
-        jobs = args.peer_jobs if all(MESHERS[MESHER_KEYS.index(k)][1] != "bubble" for k in phase) else 1
+        # their phase runs --peer-jobs rows at a time; our runs take every core, one at a time.
+        jobs = args.peer_jobs if phase is PEER_KEYS else 1
         with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
             futures = [(i, pool.submit(run_row, contexts[i], key, args, tools, avail, deadline)) for i, key in tasks]
             for i, f in futures:
