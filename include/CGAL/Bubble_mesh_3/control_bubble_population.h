@@ -55,36 +55,14 @@ namespace internal {
 // fixed blocks whatever the thread count: partial results are combined in block order
 constexpr std::size_t reduction_block = 2048;
 
-/// sum and max of per-index values, bit-identical for any number of threads
-template <class ConcurrencyTag, class F>
-std::pair<double, double> deterministic_sum_and_max(std::size_t n, const F& value_pair)
-{
-  const std::size_t nb = (n + reduction_block - 1) / reduction_block;
-  std::vector<double> sums(nb, 0.), maxs(nb, 0.);
-  for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
-    for(std::size_t b = b0; b < b1; ++b)
-    {
-      double s = 0., m = 0.;
-      const std::size_t e = (std::min)(n, (b + 1) * reduction_block);
-      for(std::size_t i = b * reduction_block; i < e; ++i)
-      {
-        const std::pair<double, double> v = value_pair(i);
-        s += v.first;
-        m = (std::max)(m, v.second);
-      }
-      sums[b] = s;
-      maxs[b] = m;
-    }
-  });
-  double s = 0., m = 0.;
-  for(std::size_t b = 0; b < nb; ++b) { s += sums[b]; m = (std::max)(m, maxs[b]); }
-  return std::make_pair(s, m);
-}
-
-/// sums of N per-index values, bit-identical for any number of threads
+/// N per-index values reduced over [0, n): slot k summed, or its largest kept where
+/// `largest[k]` (from 0: the values are not negative), bit-identical for any number of threads
 template <class ConcurrencyTag, std::size_t N, class F>
-std::array<double, N> deterministic_sums(std::size_t n, const F& values)
+std::array<double, N> deterministic_reduce(std::size_t n, const F& values, const std::array<bool, N>& largest)
 {
+  const auto add = [&largest](std::array<double, N>& s, const std::array<double, N>& v) {
+    for(std::size_t k = 0; k < N; ++k) s[k] = largest[k] ? (std::max)(s[k], v[k]) : s[k] + v[k];
+  };
   const std::size_t nb = (n + reduction_block - 1) / reduction_block;
   std::vector<std::array<double, N> > partial(nb);
   for_each_block<ConcurrencyTag>(nb, 1, [&](std::size_t b0, std::size_t b1) {
@@ -92,17 +70,12 @@ std::array<double, N> deterministic_sums(std::size_t n, const F& values)
     {
       std::array<double, N> s{};
       const std::size_t e = (std::min)(n, (b + 1) * reduction_block);
-      for(std::size_t i = b * reduction_block; i < e; ++i)
-      {
-        const std::array<double, N> v = values(i);
-        for(std::size_t k = 0; k < N; ++k) s[k] += v[k];
-      }
+      for(std::size_t i = b * reduction_block; i < e; ++i) add(s, values(i));
       partial[b] = s;
     }
   });
   std::array<double, N> s{};
-  for(std::size_t b = 0; b < nb; ++b)
-    for(std::size_t k = 0; k < N; ++k) s[k] += partial[b][k];
+  for(std::size_t b = 0; b < nb; ++b) add(s, partial[b]);
   return s;
 }
 

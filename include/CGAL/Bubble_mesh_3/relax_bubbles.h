@@ -211,12 +211,15 @@ public:
   void reset()
   {
     const std::size_t n = s_.n_free, total = s_.size();
-    px_.assign(s_.x.begin(), s_.x.end());
-    py_.assign(s_.y.begin(), s_.y.end());
-    pz_.assign(s_.z.begin(), s_.z.end());
-    pvx_.assign(n, 0.); pvy_.assign(n, 0.); pvz_.assign(n, 0.);
+    if(!st_.inertial) // Heun's predicted state; FIRE has none
+    {
+      px_.assign(s_.x.begin(), s_.x.end());
+      py_.assign(s_.y.begin(), s_.y.end());
+      pz_.assign(s_.z.begin(), s_.z.end());
+      pvx_.assign(n, 0.); pvy_.assign(n, 0.); pvz_.assign(n, 0.);
+      f1x_.assign(n, 0.); f1y_.assign(n, 0.); f1z_.assign(n, 0.);
+    }
     f0x_.assign(n, 0.); f0y_.assign(n, 0.); f0z_.assign(n, 0.);
-    f1x_.assign(n, 0.); f1y_.assign(n, 0.); f1z_.assign(n, 0.);
     ke_.assign(n, 0.); disp_.assign(n, 0.);
     resting_.assign(n, 0); quiet_steps_.assign(n, 0);
     steps_since_full_ = 0;
@@ -290,8 +293,9 @@ private:
   Figures end_step()
   {
     const std::size_t n = s_.n_free;
-    const std::pair<double, double> sm =
-      deterministic_sum_and_max<ConcurrencyTag>(n, [&](std::size_t i) { return std::make_pair(ke_[i], disp_[i]); });
+    // the kinetic energy summed, the largest displacement
+    const std::array<double, 2> sm = deterministic_reduce<ConcurrencyTag, 2>(
+      n, [&](std::size_t i) { return std::array<double, 2>{ke_[i], disp_[i]}; }, {false, true});
     // (before the forces below: a bubble woken now needs its force for the next step)
     if(rest_threshold_ > 0.) update_resting();
     update_lists(s_.x.data(), s_.y.data(), s_.z.data());
@@ -302,10 +306,10 @@ private:
     // They are also held after the first steps of a relaxation: where the field
     // varies fast (a huge input triangle next to small ones) bubbles drifting
     // into larger sizes grow, push their neighbours on and never come to rest.
-    if(sm.second < 10. * st_.tolerance || ++steps_ >= st_.radius_update_steps) follow_sizing_ = false;
+    if(sm[1] < 10. * st_.tolerance || ++steps_ >= st_.radius_update_steps) follow_sizing_ = false;
     Figures f;
-    f.kinetic_energy = 0.5 * st_.mass * sm.first;
-    f.max_displacement = sm.second;
+    f.kinetic_energy = 0.5 * st_.mass * sm[0];
+    f.max_displacement = sm[1];
     return f;
   }
 
@@ -326,10 +330,11 @@ private:
   {
     const std::size_t n = s_.n_free;
     const double dt0 = st_.time_step;
-    const std::array<double, 3> sums = deterministic_sums<ConcurrencyTag, 3>(n, [&](std::size_t i) {
+    // F.v, |v|^2 and |F|^2 over the region
+    const std::array<double, 3> sums = deterministic_reduce<ConcurrencyTag, 3>(n, [&](std::size_t i) {
       const double vx = s_.vx[i], vy = s_.vy[i], vz = s_.vz[i], fx = f0x_[i], fy = f0y_[i], fz = f0z_[i];
       return std::array<double, 3>{fx * vx + fy * vy + fz * vz, vx * vx + vy * vy + vz * vz, fx * fx + fy * fy + fz * fz};
-    });
+    }, {false, false, false});
     const bool uphill = sums[0] < 0.;
     ++inertial_steps_;
     if(!uphill)
@@ -972,7 +977,7 @@ private:
   const SizingField& sizing_;
   Dynamics_settings st_;
   Bubble_grid grid_;
-  std::vector<double> px_, py_, pz_, pvx_, pvy_, pvz_;   // predicted state (px_ also holds the fixed bubbles)
+  std::vector<double> px_, py_, pz_, pvx_, pvy_, pvz_;   // Heun's predicted state (px_ also holds the fixed bubbles)
   std::vector<double> f0x_, f0y_, f0z_, f1x_, f1y_, f1z_;
   std::vector<double> ke_, disp_;
   std::vector<unsigned char> resting_, quiet_steps_;     // per free bubble, see set_rest_threshold()
