@@ -412,6 +412,57 @@ static void test_area_weighted_radius_floor()
   assert(even.default_radius(1) == 0.3 && even.default_radius(2) == 0.3);
 }
 
+// The graded bound min_j (r_j + g l_j) of a gentle gradation reaches far from
+// the query; the field walks its grid's cells nearest first and skips those whose
+// smallest bubble could not lower it. Against brute force over every surface
+// bubble of the region, on the two-layer box with radii spread over 0.05..0.5
+// (a cell of small bubbles beside cells of large ones), at points inside, on and
+// outside the box: the same value.
+static void test_graded_bound_against_brute_force()
+{
+  const Model box = make_two_layer_box();
+  std::vector<Bubble> sb = BM::place_surface_bubbles(box);
+  CGAL::Random rng(7);
+  for(Bubble& b : sb) b.radius = rng.get_double() < 0.1 ? rng.get_double(0.05, 0.1) : rng.get_double(0.2, 0.5);
+  for(std::size_t region = 1; region <= 2; ++region)
+  {
+    std::set<std::size_t> points;
+    for(std::size_t t = 0; t < box.number_of_triangles(); ++t)
+    {
+      const auto& patch = box.patch(box.patch_of_triangle(t));
+      if(patch.positive_region == region || patch.negative_region == region)
+        for(std::size_t v : box.triangle(t)) points.insert(v);
+    }
+    std::size_t checked = 0, bound_wins = 0;
+    for(double g : {0.5, 0.1, 0.02})
+    {
+      const BM::Surface_bubble_sizing_field<K> field(box, sb, BMP::size_gradation(g));
+      const BM::Surface_bubble_sizing_field<K> interpolated(box, sb, BMP::size_gradation(0.));
+      for(int k = 0; k < 300; ++k)
+      {
+        const Point_3 p(rng.get_double(-3., 13.), rng.get_double(-3., 9.), rng.get_double(-1., 5.));
+        double brute = interpolated(p, region);
+        const double x = p.x(), y = p.y(), z = p.z();
+        for(const Bubble& b : sb)
+          if(points.count(b.surface_point))
+          {
+            const double dx = b.center.x() - x, dy = b.center.y() - y, dz = b.center.z() - z;
+            brute = (std::min)(brute, b.radius + g * std::sqrt(dx * dx + dy * dy + dz * dz));
+          }
+        const double got = field(p, region);
+        if(!close(got, brute, 1e-12))
+          std::cout << "region " << region << ", g " << g << ", at " << p << ": " << got << " against " << brute << "\n";
+        assert(close(got, brute, 1e-12));
+        ++checked;
+        if(brute < interpolated(p, region)) ++bound_wins;
+      }
+    }
+    std::cout << "graded bound, region " << region << ": " << checked << " points as brute force, the bound below the interpolation at "
+              << bound_wins << "\n";
+    assert(bound_wins > checked / 4); // the bound is what is tested
+  }
+}
+
 // Smallest (distance to the nearest model triangle) / radius over the bubbles:
 // by brute force over all triangles, or with one AABB tree of all triangles
 // (independent of the per-region trees of the placement).
@@ -686,6 +737,7 @@ int main()
   test_silhouette_subsample();
   test_radius_rule();
   test_area_weighted_radius_floor();
+  test_graded_bound_against_brute_force();
   test_initial_bubbles_on_box();
   test_graded_cells_on_box();
   test_default_model();

@@ -196,6 +196,56 @@ public:
     }
   }
 
+  /// The built cells in shells of growing Chebyshev distance around the cell of
+  /// `(x,y,z)`, for a nearest-first search that stops early: before shell `k`,
+  /// `stop(d)` is asked with `d` a lower bound of the distance from `(x,y,z)`
+  /// to any of its cells (0 for the first two) and the walk ends if it says so;
+  /// then `g(c, gap, q, count)` for each non-empty cell `c` of the shell, `gap`
+  /// a lower bound of the distance to its box, its `count` points at `q + 4 * s`.
+  /// Needs a `build()` with radii, and no inserted points.
+  template <class Stop, class G>
+  void for_each_cell_in_shells(double x, double y, double z, const Stop& stop, const G& g) const
+  {
+    CGAL_precondition(packed_.size() == 4 * items_.size() && extra_next_.empty());
+    const double slack = 1e-6 * cell_size_ + 1e-13 * (std::abs(x) + std::abs(y) + std::abs(z));
+    const std::size_t c0[3] = {cell_coordinate(x, 0), cell_coordinate(y, 1), cell_coordinate(z, 2)};
+    const std::size_t largest = (std::max)(dims_[0], (std::max)(dims_[1], dims_[2]));
+    auto visit = [&](std::size_t i, std::size_t j, std::size_t k, double gyz2) {
+      const std::size_t c = (k * dims_[1] + j) * dims_[0] + i;
+      const Index s0 = start_[c], s1 = start_[c + 1];
+      if(s1 == s0) return;
+      const double gx = gap_to_slab(x, i, 0, slack);
+      g(c, std::sqrt(gx * gx + gyz2), packed_.data() + 4 * std::size_t(s0), std::size_t(s1 - s0));
+    };
+    for(std::size_t shell = 0; shell < largest; ++shell)
+    {
+      if(stop(shell > 1 ? double(shell - 1) * cell_size_ - slack : 0.)) return;
+      std::size_t lo[3], hi[3];
+      for(int d = 0; d < 3; ++d)
+      {
+        lo[d] = c0[d] >= shell ? c0[d] - shell : 0;
+        hi[d] = (std::min)(c0[d] + shell, dims_[d] - 1);
+      }
+      for(std::size_t k = lo[2]; k <= hi[2]; ++k)
+      {
+        const double gz = gap_to_slab(z, k, 2, slack);
+        const bool on_z = k + shell == c0[2] || k == c0[2] + shell;
+        for(std::size_t j = lo[1]; j <= hi[1]; ++j)
+        {
+          const double gy = gap_to_slab(y, j, 1, slack), gyz2 = gy * gy + gz * gz;
+          if(on_z || j + shell == c0[1] || j == c0[1] + shell)
+            for(std::size_t i = lo[0]; i <= hi[0]; ++i) visit(i, j, k, gyz2); // a face of the shell: whole row
+          else
+          {
+            // inside the shell's faces along y and z: only its two ends along x
+            if(c0[0] >= shell) visit(c0[0] - shell, j, k, gyz2);
+            if(shell > 0 && c0[0] + shell < dims_[0]) visit(c0[0] + shell, j, k, gyz2);
+          }
+        }
+      }
+    }
+  }
+
   /// the built points in cell order (a cheap spatial sort)
   const std::vector<Index>& items_in_cell_order() const { return items_; }
 
