@@ -149,6 +149,14 @@ const char* usage_text =
 "                             features: better-shaped tetrahedra, more of them (bundled\n"
 "                             model: 1.2 gives an aspect-ratio median of 1.80 instead of\n"
 "                             1.85 with 42 % more tetrahedra)\n"
+"  --interior-grading G       largest ratio between the radii of touching bubbles as they\n"
+"                             grow away from the surfaces (default 3, above 1). Nearer 1\n"
+"                             a body beside a thin layer keeps small tetrahedra further\n"
+"                             in: better-shaped there, more of them (bundled model\n"
+"                             re-meshed at 1.25: aspect-ratio median 1.79 instead of 1.85,\n"
+"                             22 % more tetrahedra; CloudSpin: 1.66 instead of 1.64, 23 %\n"
+"                             more: inside bodies that the surfaces coarsen faster, the\n"
+"                             jump moves to the coarse surfaces)\n"
 "  --curvature-angle D        with --remesh-surfaces: largest turn, in degrees, of a curved\n"
 "                             surface along one new edge (default 22.5: 16 edges around a\n"
 "                             tunnel; smaller keeps curved bodies' volumes closer, with\n"
@@ -229,6 +237,9 @@ struct Options
   // Remeshing_sizing_field's size_grading
   double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
   bool size_grading_given = false;
+  // Surface_bubble_sizing_field's size_gradation g, given as the ratio (1 + g) / (1 - g)
+  // (0: not given, the library's default for kept or re-meshed surfaces)
+  double interior_grading = 0.;
   // Remeshing_sizing_field's curvature_angle
   double curvature_angle = BM::Remeshing_sizing_field<K>::default_curvature_angle;
   bool curvature_angle_given = false;
@@ -354,6 +365,13 @@ Options parse_options(int argc, char** argv)
       if(!(g > 1.) || !(g <= 10.)) usage_error("--size-grading takes a ratio above 1 and at most 10, got '" + args[i] + "'");
       o.size_grading = g;
       o.size_grading_given = true;
+    }
+    else if(a == "--interior-grading")
+    {
+      const double g = parse_double(a, value(a));
+      if(!(g > 1.) || !(g <= 100.))
+        usage_error("--interior-grading takes a ratio above 1 and at most 100, got '" + args[i] + "'");
+      o.interior_grading = g;
     }
     else if(a == "--curvature-angle")
     {
@@ -695,6 +713,10 @@ int main(int argc, char** argv)
                 << std::defaultfloat << std::flush;
     };
     stage_timer.start();
+    // the ratio G between touching bubbles is the field's g = (G - 1) / (G + 1)
+    const double interior_gradation = opt.interior_grading > 0.
+                                        ? (opt.interior_grading - 1.) / (opt.interior_grading + 1.)
+                                        : BM::Surface_bubble_sizing_field<K>::default_size_gradation;
     const auto np = BM::parameters::stage_callback(progress,
                     BM::parameters::bubble_mesh_report(&report,
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,
@@ -708,6 +730,7 @@ int main(int argc, char** argv)
                     BM::parameters::remesh_input_surfaces(opt.remesh_surfaces,
                     BM::parameters::elements_across_thickness(opt.layer_elements,
                     BM::parameters::size_grading(opt.size_grading,
+                    BM::parameters::size_gradation(interior_gradation,
                     BM::parameters::curvature_angle(opt.curvature_angle,
                     BM::parameters::refine_ribbons(opt.refine_ribbons,
                     // re-meshed, a region's factor sizes its surfaces and its inside follows
@@ -719,7 +742,7 @@ int main(int argc, char** argv)
                     BM::parameters::solid_angle_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::wall_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::inertial_relaxation(!opt.paper_dynamics,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

@@ -417,11 +417,28 @@ grading_triangles() { echo "$out" | sed -n 's/^surface remeshing: [0-9]* -> \([0
 run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --no-sliver-removal --threads 2
 check "--remesh-surfaces on the slab and box exits 0" test "$rc" -eq 0
 g15="$(grading_triangles)"
+grading_bubbles() { echo "$out" | sed -n 's/^mesh: .* surface points, \([0-9]*\) bubbles.*/\1/p'; }
+b_default="$(grading_bubbles)"
 run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --size-grading 1.2 --no-sliver-removal --threads 2
 g12="$(grading_triangles)"
 echo "  slab and box re-meshed triangles with size grading 1.5 (default) / 1.2: $g15 / $g12"
 check "--size-grading: more triangles with a slower grading" \
   test -n "$g15" -a -n "$g12" -a "${g15:-0}" -lt "${g12:-0}"
+# --interior-grading: in the box beside the fine slab the bubbles grow away from
+# it at most by the ratio given between touching ones: more of them with 1.25
+# than by default, the same as the default with 3 given
+run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --interior-grading 1.25 --no-sliver-removal --threads 2
+b125="$(grading_bubbles)"
+run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --interior-grading 3 --no-sliver-removal --threads 2
+b3="$(grading_bubbles)"
+echo "  slab and box bubbles with interior grading 3 (default) / 1.25 / 3 given: $b_default / $b125 / $b3"
+check "--interior-grading: more bubbles with 1.25 than by default" \
+  test -n "$b_default" -a -n "$b125" -a "${b_default:-0}" -lt "${b125:-0}"
+check "--interior-grading 3 is the default" test -n "$b3" -a "${b3:-x}" = "${b_default:-y}"
+run "$tmp/slab_box.obj" --interior-grading 1
+check "--interior-grading 1 exits 2" test "$rc" -eq 2
+check "--interior-grading 1 says what it takes" contains "$err" "ratio above 1"
+check "--help lists --interior-grading" bash -c "'$exe' --help | grep -q -- --interior-grading"
 run "$tmp/slab_box.obj" --size-grading 1.2
 check "--size-grading without --remesh-surfaces exits 2" test "$rc" -eq 2
 check "--size-grading without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"

@@ -73,9 +73,15 @@ touching its surface. The second term, over all surface bubbles `i` of `r`,
 bounds the growth of the radius away from the surface by `g` per unit of
 distance (`g` = `size_gradation`, 0.5; 0 drops it, as in the paper): the few
 huge bubbles at the corners of coarse triangles (a box's faces) would
-otherwise be interpolated over the whole fine mesh beside them. It and the
-quantiles are deviations from the paper, measured on modelA1
-(bench/README.md).
+otherwise be interpolated over the whole fine mesh beside them. Two touching
+bubbles the bound holds have radii within a ratio `(1 + g) / (1 - g)`: 3 at
+0.5. A gentler bound grades a body beside a finer one more slowly, with more
+bubbles: on re-meshed surfaces `g = 1/9` (a ratio of 1.25) takes the bundled
+model's aspect-ratio median from 1.85 to 1.79 with 22 % more tetrahedra, but
+CloudSpin's from 1.64 to 1.66 with 23 % more: where the inside cannot grow as
+fast as the surfaces do, the jump moves to the coarse surfaces (bench/README.md,
+session 52). It and the quantiles are deviations from the paper, measured on
+modelA1 (bench/README.md).
 
 Only surface bubbles whose `surface_point` is a model point are used. Weight
 points are found in a uniform grid per region (cells of half the search
@@ -95,6 +101,9 @@ public:
   typedef GeomTraits Geom_traits;
   /// point type
   typedef typename GeomTraits::Point_3 Point_3;
+
+  /// `size_gradation` unless given: touching bubbles' radii within a ratio of 3
+  static constexpr double default_size_gradation = 0.5;
 
 private:
   typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
@@ -136,7 +145,7 @@ public:
     \cgalParamNBegin{size_gradation}
       \cgalParamDescription{`g`: the radius grows at most `g` per unit of distance from a surface bubble; 0: no bound}
       \cgalParamType{double}
-      \cgalParamDefault{0.5}
+      \cgalParamDefault{`default_size_gradation` (0.5)}
     \cgalParamNEnd
     \cgalParamNBegin{area_weighted_radius_floor}
       \cgalParamDescription{R0 at least half of the quantiles' value weighted by area (see above); for surfaces
@@ -161,7 +170,7 @@ public:
     weighting_ = choose_parameter(get_parameter(np, internal_np::radius_weighting),
                                   Radius_weighting::INVERSE_DISTANCE);
     range_factor_ = choose_parameter(get_parameter(np, internal_np::interaction_range_factor), 1.5);
-    gradation_ = choose_parameter(get_parameter(np, internal_np::size_gradation), 0.5);
+    gradation_ = choose_parameter(get_parameter(np, internal_np::size_gradation), default_size_gradation);
     scale_ = choose_parameter(get_parameter(np, internal_np::region_scale_factors), std::vector<double>());
     const bool area_floor = choose_parameter(get_parameter(np, internal_np::area_weighted_radius_floor), false);
 
