@@ -405,7 +405,9 @@ hence region volumes do not change. Four steps:
    complex facets and volumes stay. This removes slivers whose four vertices
    lie on the top and bottom of a thin layer. Then each cell still under
    the bound, worst first, with the cells around it (one to three rings of neighbours
-   across facets not in the complex, in its region) is replaced by the star
+   across facets not in the complex, in its region; for a cell under 10
+   degrees that they leave above the bound, also the cells around each of
+   its edges, split near the edge's middle) is replaced by the star
    of a new vertex placed in the kernel of that cavity (its centroid, the
    centroid of the cavity's vertices, and seeded random points around the
    best so far), if the new cells beat the cells they replace (larger
