@@ -238,7 +238,7 @@ struct Options
   double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
   bool size_grading_given = false;
   // Surface_bubble_sizing_field's size_gradation g, given as the ratio (1 + g) / (1 - g)
-  // (0: not given, the library's default for kept or re-meshed surfaces)
+  // (0: not given, the field's default_size_gradation)
   double interior_grading = 0.;
   // Remeshing_sizing_field's curvature_angle
   double curvature_angle = BM::Remeshing_sizing_field<K>::default_curvature_angle;

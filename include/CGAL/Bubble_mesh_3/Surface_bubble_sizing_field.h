@@ -343,7 +343,8 @@ private:
     // of graded_bound(), without its allocations. (Margins cover rounding.)
     const double needed = (interpolated - rd.r_min + 1e-9 * interpolated) / gradation_;
     if(needed < 0.999 * range) return (std::min)(interpolated, graded);
-    return (std::min)(interpolated, graded_bound(rd, p, interpolated));
+    // (the walk starts from what the bubbles visited above already give)
+    return (std::min)(interpolated, graded_bound(rd, p, (std::min)(interpolated, graded)));
   }
 
   // A weight point's weight fades to 0 at the edge of its range, and R0 is one
