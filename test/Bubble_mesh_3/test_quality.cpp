@@ -413,31 +413,10 @@ static void test_svg()
 }
 
 
-// A sharp contact: region 1 is a wedge between z = 0 and z = t x (5 degrees),
-// x and y in [0, 1], whose edge x = z = 0 no mesher can meet with good tets;
-// region 2 is a box [2, 3] x [0, 1] x [0, t], as thin as the wedge's end, whose
-// edges are right angles: its thin tets are the mesher's. The input triangles
-// are said to be good (angle 60), so that no surface angle explains anything.
-static void test_sharp_contact()
+// The tet faces met once become the boundary triangles, their input said to be
+// good (angle 60), so that no surface angle explains anything.
+static void add_faces_met_once(BM::Labeled_tetrahedral_mesh_3& m)
 {
-  const double t = std::tan(5. * pi / 180.);
-  BM::Labeled_tetrahedral_mesh_3 m;
-  // the wedge: a prism with ends (A, C, E) at y = 0 and (B, D, F) at y = 1, in three tets
-  m.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{1., 0., t}}, {{0., 1., 0.}}, {{1., 1., 0.}}, {{1., 1., t}}};
-  const std::size_t A = 0, C = 1, E = 2, B = 3, D = 4, F = 5;
-  m.tetrahedra = {{{A, C, E, F}}, {{A, C, F, D}}, {{A, D, F, B}}};
-  m.regions = {1, 1, 1};
-  // the box: corner k at (2 + (k & 1), (k >> 1) & 1, t ((k >> 2) & 1)), six tets around its diagonal
-  for(int k = 0; k < 8; ++k) m.points.push_back({{2. + (k & 1), double((k >> 1) & 1), t * ((k >> 2) & 1)}});
-  const std::size_t o = 6;
-  for(int a : {1, 2, 4})
-    for(int b : {1, 2, 4})
-      if(a != b)
-      {
-        m.tetrahedra.push_back({{o, o + a, o + a + b, o + 7}});
-        m.regions.push_back(2);
-      }
-  // boundary triangles: the tet faces met once
   std::map<std::array<std::size_t, 3>, int> faces;
   for(const auto& tet : m.tetrahedra)
     for(int f = 0; f < 4; ++f)
@@ -452,6 +431,41 @@ static void test_sharp_contact()
       m.boundary_triangles.push_back(f.first);
       m.input_min_angles.push_back(60.);
     }
+}
+
+// Region 1 of a wedge between z = 0 and z = t x, x and y in [0, 1]: a prism with
+// ends (A, C, E) = points 0, 1, 2 at y = 0 and (B, D, F) = 3, 4, 5 at y = 1, in
+// three tets.
+static BM::Labeled_tetrahedral_mesh_3 wedge_prism(double t)
+{
+  BM::Labeled_tetrahedral_mesh_3 m;
+  m.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{1., 0., t}}, {{0., 1., 0.}}, {{1., 1., 0.}}, {{1., 1., t}}};
+  const std::size_t A = 0, C = 1, E = 2, B = 3, D = 4, F = 5;
+  m.tetrahedra = {{{A, C, E, F}}, {{A, C, F, D}}, {{A, D, F, B}}};
+  m.regions = {1, 1, 1};
+  return m;
+}
+
+// A sharp contact: region 1 is a wedge between z = 0 and z = t x (5 degrees),
+// x and y in [0, 1], whose edge x = z = 0 no mesher can meet with good tets;
+// region 2 is a box [2, 3] x [0, 1] x [0, t], as thin as the wedge's end, whose
+// edges are right angles: its thin tets are the mesher's. The input triangles
+// are said to be good (angle 60), so that no surface angle explains anything.
+static void test_sharp_contact()
+{
+  const double t = std::tan(5. * pi / 180.);
+  BM::Labeled_tetrahedral_mesh_3 m = wedge_prism(t);
+  // the box: corner k at (2 + (k & 1), (k >> 1) & 1, t ((k >> 2) & 1)), six tets around its diagonal
+  for(int k = 0; k < 8; ++k) m.points.push_back({{2. + (k & 1), double((k >> 1) & 1), t * ((k >> 2) & 1)}});
+  const std::size_t o = 6;
+  for(int a : {1, 2, 4})
+    for(int b : {1, 2, 4})
+      if(a != b)
+      {
+        m.tetrahedra.push_back({{o, o + a, o + a + b, o + 7}});
+        m.regions.push_back(2);
+      }
+  add_faces_met_once(m);
   assert(m.boundary_triangles.size() == 8 + 12);
 
   const BM::Mesh_quality_report r = BM::compute_mesh_quality(m);
@@ -478,6 +492,77 @@ static void test_sharp_contact()
   assert(text.str().find("next to a sharp contact") != std::string::npos);
 }
 
+// Inside a sharp contact's wedge: region 1 is the 5-degree wedge between z = 0
+// and z = t x for x in [0, 2], y in [0, 1]: a prism at its edge (three tets
+// through A or B) and a slab x in [1, 2] (six tets touching neither). The
+// slab's tets span the wedge, at most 2 t = 0.17 thick, with edges of about 1:
+// thin there whatever the mesher does, so counted at the contact. A sliver 0.05
+// across inside the slab, where the wedge is thicker than it, is the mesh's own
+// (it touches no surface). Region 2, a box [3, 4] x [0, 1] x [0, t], is as
+// thin but its edges are right angles: nothing there is the contact's.
+static void test_thin_wedge()
+{
+  const double t = std::tan(5. * pi / 180.);
+  BM::Labeled_tetrahedral_mesh_3 m = wedge_prism(t);
+  const std::size_t C = 1, E = 2, D = 4, F = 5;
+  // a hexahedron with corner k at (x0 + (k & 1), (k >> 1) & 1, top(x) if k & 4), in
+  // six tets around its diagonal (0, 7); `corner` gives the indices of its corners
+  auto hexahedron = [&](std::array<std::size_t, 8> corner, int region) {
+    for(int a : {1, 2, 4})
+      for(int b : {1, 2, 4})
+        if(a != b)
+        {
+          m.tetrahedra.push_back({{corner[0], corner[a], corner[a + b], corner[7]}});
+          m.regions.push_back(region);
+        }
+  };
+  auto add_point = [&](double x, double y, double z) {
+    m.points.push_back({{x, y, z}});
+    return m.points.size() - 1;
+  };
+  // the slab shares the prism's face x = 1 (split along C F, as the six tets split it)
+  hexahedron({{C, add_point(2., 0., 0.), D, add_point(2., 1., 0.), E, add_point(2., 0., 2. * t), F,
+               add_point(2., 1., 2. * t)}},
+             1);
+  std::array<std::size_t, 8> box;
+  for(int k = 0; k < 8; ++k) box[k] = add_point(3. + (k & 1), double((k >> 1) & 1), t * ((k >> 2) & 1));
+  hexahedron(box, 2);
+  add_faces_met_once(m);
+  // the sliver: a square's corners lifted alternately, 0.05 across, at (1.8, 0.5, 0.07)
+  {
+    const double h = 0.025, lift = 0.002;
+    const std::size_t s0 = add_point(1.8 - h, 0.5 - h, 0.07), s1 = add_point(1.8 + h, 0.5 + h, 0.07),
+                      s2 = add_point(1.8 + h, 0.5 - h, 0.07 + lift), s3 = add_point(1.8 - h, 0.5 + h, 0.07 + lift);
+    m.tetrahedra.push_back({{s0, s1, s2, s3}});
+    m.regions.push_back(1);
+  }
+
+  const BM::Mesh_quality_report r = BM::compute_mesh_quality(m);
+  const BM::Region_quality &wedge = r.regions[0], &thin_box = r.regions[1];
+  const double n1 = double(wedge.number_of_tetrahedra);
+  assert(wedge.number_of_tetrahedra == 3 + 6 + 1);
+  std::size_t slab_under_10 = 0, slab_tets = 0;
+  for(std::size_t i = 3; i < 9; ++i)
+  {
+    const auto& tet = m.tetrahedra[i];
+    ++slab_tets;
+    if(BM::tetrahedron_quality(m.points[tet[0]], m.points[tet[1]], m.points[tet[2]], m.points[tet[3]])
+         .min_dihedral_angle < 10.)
+      ++slab_under_10;
+  }
+  std::cout << "  thin wedge: " << slab_under_10 << " of the slab's " << slab_tets << " tets under 10 degrees"
+            << std::endl;
+  assert(slab_under_10 > 0);
+  // the prism's 3, the slab's thin ones and the sliver are under 10 and no surface angle explains them
+  check_near("wedge: share under 10 not at a small surface angle", wedge.share_under_10_not_at_small_surface_angle,
+             double(3 + slab_under_10 + 1) / n1);
+  // the contact takes all but the sliver
+  check_near("wedge: share under 10 at a sharp contact", wedge.share_under_10_at_sharp_contact,
+             double(3 + slab_under_10) / n1);
+  assert(thin_box.share_smallest_dihedral_under[1] > 0.);
+  check_near("thin box: share under 10 at a sharp contact", thin_box.share_under_10_at_sharp_contact, 0.);
+}
+
 int main()
 {
   std::cout.precision(10);
@@ -486,6 +571,7 @@ int main()
   test_right_corner();
   test_report();
   test_sharp_contact();
+  test_thin_wedge();
   test_c3t3();
   test_svg();
   std::cout << "test_quality: all checks passed\n";

@@ -140,8 +140,12 @@ struct Region_quality
   /// that have a vertex on a sharp contact of their region: a boundary edge
   /// where the region's angle between the surfaces (the sum of its tets'
   /// dihedral angles there, between two boundary triangles) is under 10
-  /// degrees, as at a pinch-out or a layer cut by a surface at a low angle.
-  /// Every tet there is thin whatever the mesher does. NaN as above.
+  /// degrees, as at a pinch-out or a layer cut by a surface at a low angle,
+  /// or that lie inside such a contact's wedge (the nearest one) where it is
+  /// thinner than their longest edge: within L / theta of the contact line
+  /// for a wedge of theta radians. Every tet with a vertex there is thin
+  /// whatever the mesher does, and one of size L fits across the wedge
+  /// nowhere nearer than L / theta. NaN as above.
   double share_under_10_at_sharp_contact = std::nan("");
 
   double min_face_angle = std::nan("");         ///< smallest of the 12 n face angles

@@ -10,6 +10,9 @@
 
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Bubble_mesh_3/internal/union_find.h>
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
@@ -22,6 +25,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -456,7 +460,10 @@ public:
       for(std::size_t i = 0; i < k; ++i) sum[uf_find(parent, i)] += around_[first + i].angle;
       for(std::size_t i = 0; i < k; ++i)
         if(parent[i] == i) // once per sector
+        {
           for(std::size_t v : e) smallest_.push_back(std::make_tuple(v, around_[first].region, sum[i]));
+          if(sum[i] < sharp_angle) add_wedge(surfaces, first, k, parent, i);
+        }
       first = last;
     }
     around_.clear();
@@ -485,6 +492,50 @@ public:
     return r;
   }
 
+  // Whether `tet` of `region` lies inside the sector of the sharp contact
+  // nearest to its centroid where that sector is thinner (the centroid's
+  // distances to its two walls added) than the tet's longest edge: in a wedge
+  // of angle theta that is every tet within L / theta of the contact line, and
+  // no tet of size L fits across there.
+  bool in_thin_wedge(const std::vector<std::array<double, 3> >& points, const std::array<std::size_t, 4>& tet,
+                     int region)
+  {
+    const auto found = wedges_.find(region);
+    if(found == wedges_.end()) return false;
+    Wedge_search& ws = found->second;
+    if(!ws.tree)
+    {
+      for(const Wedge& w : ws.wedges) ws.segments.push_back(Segment(point(points, w.edge[0]), point(points, w.edge[1])));
+      ws.tree.reset(new Tree(ws.segments.begin(), ws.segments.end()));
+      ws.tree->accelerate_distance_queries();
+    }
+    Vector c(0., 0., 0.);
+    double longest = 0.;
+    for(int i = 0; i < 4; ++i)
+    {
+      c = c + (point(points, tet[i]) - CGAL::ORIGIN) / 4.;
+      for(int j = i + 1; j < 4; ++j)
+        longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(point(points, tet[i]), point(points, tet[j]))));
+    }
+    const Point centroid = CGAL::ORIGIN + c;
+    const Wedge& w = ws.wedges[std::size_t(ws.tree->closest_point_and_primitive(centroid).second - ws.segments.begin())];
+    const Point a = point(points, w.edge[0]), b = point(points, w.edge[1]);
+    const Point w1 = point(points, w.w1), w2 = point(points, w.w2);
+    // the centroid's distance to the wall through (a, b, from), towards the other wall `to`
+    auto inside = [&](const Point& from, const Point& to) {
+      Vector n = CGAL::cross_product(b - a, from - a);
+      const double len = std::sqrt(n.squared_length());
+      if(!(len > 0.)) return std::nan("");
+      if((to - a) * n < 0.) n = -n;
+      return ((centroid - a) * n) / len;
+    };
+    const double s1 = inside(w1, w2), s2 = inside(w2, w1);
+    return s1 >= 0. && s2 >= 0. && s1 + s2 < longest;
+  }
+
+  /// sectors under this many degrees are sharp contacts
+  static constexpr double sharp_angle = 10.;
+
 private:
   struct Around
   {
@@ -494,9 +545,50 @@ private:
     double angle;                      // its dihedral angle at the edge
   };
   typedef std::tuple<std::size_t, int, double> Entry;
+  typedef CGAL::Simple_cartesian<double> SK;
+  typedef SK::Point_3 Point;
+  typedef SK::Vector_3 Vector;
+  typedef SK::Segment_3 Segment;
+  typedef std::vector<Segment>::const_iterator Segment_iterator;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<SK, CGAL::AABB_segment_primitive<SK, Segment_iterator> > > Tree;
+  // a sharp sector: its edge and the third vertices of its two walls
+  struct Wedge
+  {
+    std::array<std::uint32_t, 2> edge;
+    std::uint32_t w1, w2;
+  };
+  // a region's sharp sectors, searched (built on the first query) by their edges
+  struct Wedge_search
+  {
+    std::vector<Wedge> wedges;
+    std::vector<Segment> segments;
+    std::unique_ptr<Tree> tree;
+  };
+
+  static Point point(const std::vector<std::array<double, 3> >& points, std::size_t v)
+  {
+    return Point(points[v][0], points[v][1], points[v][2]);
+  }
+
+  // the sector of root `root` among the k entries from `first`: kept when two
+  // boundary triangles through its edge bound it
+  void add_wedge(const Surface_edge_index& surfaces, std::size_t first, std::size_t k,
+                 std::vector<std::size_t>& parent, std::size_t root)
+  {
+    const std::array<std::uint32_t, 2>& e = around_[first].edge;
+    std::vector<std::uint32_t> walls;
+    for(std::size_t j = 0; j < k; ++j)
+      if(uf_find(parent, j) == root)
+        for(std::uint32_t v : {around_[first + j].c, around_[first + j].d})
+          if(surfaces.is_face(e[0], e[1], v) && std::find(walls.begin(), walls.end(), v) == walls.end())
+            walls.push_back(v);
+    if(walls.size() == 2) wedges_[around_[first].region].wedges.push_back(Wedge{e, walls[0], walls[1]});
+  }
+
   std::vector<bool> on_boundary_;
   std::vector<Around> around_;
   std::vector<Entry> smallest_;
+  std::map<int, Wedge_search> wedges_;
 };
 
 } // namespace internal
@@ -521,7 +613,9 @@ triangle's own smallest angle.
 A tetrahedron under 10 degrees that touches no surface angle under 10 is
 further counted "at a sharp contact" when one of its vertices lies on a
 boundary edge where its region's angle between the surfaces is under 10
-degrees (a pinch-out): see `Region_quality::share_under_10_at_sharp_contact`.
+degrees (a pinch-out), or when it lies inside that angle where the wedge
+between the two surfaces is thinner than its longest edge: see
+`Region_quality::share_under_10_at_sharp_contact`.
 
 \pre every index of `mesh.tetrahedra` and `mesh.boundary_triangles` is smaller than `mesh.points.size()`,
 `mesh.regions.size() == mesh.tetrahedra.size()`
@@ -609,7 +703,8 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
   }
   sectors.finish(surfaces);
   for(std::size_t i : unexplained_under_10)
-    if(sectors.smallest_at(mesh.tetrahedra[i], mesh.regions[i]) < 10.)
+    if(sectors.smallest_at(mesh.tetrahedra[i], mesh.regions[i]) < internal::Contact_sectors::sharp_angle ||
+       sectors.in_thin_wedge(mesh.points, mesh.tetrahedra[i], mesh.regions[i]))
       ++per_region[mesh.regions[i]].under_10_at_sharp_contact;
 
   // distinct vertices: tets grouped by region, a stamp per point

@@ -272,7 +272,7 @@ inline void write_quality_report_text(std::ostream& os, const Mesh_quality_repor
     os << "  tets under 10 degrees not against a surface angle under 10 (" << report.surface_angle_source
        << "): " << percent(report.all.share_under_10_not_at_small_surface_angle)
        << " %\n  of them next to a sharp contact (surfaces meeting at under 10 degrees in their region, as at a"
-          " pinch-out): "
+          " pinch-out: a vertex on it, or inside its wedge where that is thinner than the tet): "
        << percent(report.all.share_under_10_at_sharp_contact) << " %\n";
 
   if(!report.worst_tetrahedra.empty())
