@@ -172,6 +172,13 @@ const char* usage_text =
 "                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
 "                             30-40 % on the models tried, for an aspect-ratio median up\n"
 "                             to 0.02 higher; 0 keeps the crowded initial bubbles (poor)\n"
+"  --population-tolerance P   a region's population has settled when a round inserts and\n"
+"                             deletes at most this share of its bubbles (default 0.002);\n"
+"                             then one relaxation to the full tolerance and one last pass\n"
+"                             end it. Larger is faster where big regions go on trading\n"
+"                             bubbles: 0.01 took CloudSpin re-meshed's relaxation from 170\n"
+"                             to 123 s, aspect-ratio median 1.638 -> 1.640; on the bundled\n"
+"                             model 6.6 -> 6.3 s, 1.849 -> 1.853\n"
 "  --region-size-factor R=F   sizes in region R (its name, or its number as --check lists\n"
 "                             it) times F, from 0.05 to 20 (0.5: edges half as long, 4 to 5\n"
 "                             times the tetrahedra there); may be given for several\n"
@@ -234,6 +241,8 @@ struct Options
   bool layer_elements_given = false;
   // relax_bubbles()'s number_of_population_rounds
   std::size_t population_rounds = BM::default_number_of_population_rounds;
+  // relax_bubbles()'s population_tolerance
+  double population_tolerance = BM::default_population_tolerance;
   // Remeshing_sizing_field's size_grading
   double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
   bool size_grading_given = false;
@@ -359,6 +368,13 @@ Options parse_options(int argc, char** argv)
     else if(a == "--region-size-factor") o.region_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--surface-size-factor") o.surface_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--population-rounds") o.population_rounds = parse_count(a, value(a), "rounds", 1000.);
+    else if(a == "--population-tolerance")
+    {
+      const double t = parse_double(a, value(a));
+      if(!(t > 0.) || !(t <= 0.1))
+        usage_error("--population-tolerance takes a share above 0 and at most 0.1, got '" + args[i] + "'");
+      o.population_tolerance = t;
+    }
     else if(a == "--size-grading")
     {
       const double g = parse_double(a, value(a));
@@ -739,10 +755,11 @@ int main(int argc, char** argv)
                     BM::parameters::region_scale_factors(opt.remesh_surfaces ? std::vector<double>() : region_factors,
                     BM::parameters::patch_size_factors(patch_factors,
                     BM::parameters::number_of_population_rounds(opt.population_rounds,
+                    BM::parameters::population_tolerance(opt.population_tolerance,
                     BM::parameters::solid_angle_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::wall_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::inertial_relaxation(!opt.paper_dynamics,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));

@@ -463,6 +463,17 @@ check "--population-rounds 0: the crowded start is kept" test -n "$b0" -a -n "$b
 run "$model" --population-rounds 2.5
 check "--population-rounds 2.5 exits 2" test "$rc" -eq 2
 check "--help lists --population-rounds" bash -c "'$exe' --help | grep -q -- --population-rounds"
+# --population-tolerance: a looser one settles the regions after fewer rounds (the
+# population it ends with differs); out of (0, 0.1] it is refused
+run "$model" --population-tolerance 0.1 --no-sliver-removal --threads 2
+check "--population-tolerance 0.1 exits 0" test "$rc" -eq 0
+b_loose="$(mesh_bubbles)"
+echo "  bundled model's bubbles with population tolerance 0.1 / 0.002 (default): $b_loose / $b12"
+check "--population-tolerance 0.1 changes the population" test -n "$b_loose" -a "${b_loose:-x}" != "${b12:-y}"
+run "$model" --population-tolerance 0
+check "--population-tolerance 0 exits 2" test "$rc" -eq 2
+check "--population-tolerance 0 says what it takes" contains "$err" "above 0 and at most 0.1"
+check "--help lists --population-tolerance" bash -c "'$exe' --help | grep -q -- --population-tolerance"
 
 # by default each planar face is re-triangulated first: the bottom's needle goes, the cube stays the cube
 run "$tmp/cube.obj" -o "$tmp/p.mesh" --quality-json "$tmp/qp.json" --threads 2

@@ -46,6 +46,10 @@ struct Population_change
 /// default of the named parameter `number_of_population_rounds` of `relax_bubbles()`
 constexpr std::size_t default_number_of_population_rounds = 12;
 
+/// \ingroup PkgBubbleMesh3Ref
+/// default of the named parameter `population_tolerance` of `relax_bubbles()`
+constexpr double default_population_tolerance = 0.002;
+
 namespace internal {
 
 // ---- deterministic parallel loops -------------------------------------------
@@ -96,7 +100,7 @@ struct Dynamics_settings
   bool solid_angle_overlap = true;
   bool wall_overlap = true;
   std::size_t population_rounds = default_number_of_population_rounds;
-  double population_tolerance = 0.002;
+  double population_tolerance = default_population_tolerance;
   double insertion_clearance = 0.7;
   double skin = 0.35;
   double max_step = 0.125;
