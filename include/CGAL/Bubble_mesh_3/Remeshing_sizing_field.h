@@ -9,6 +9,7 @@
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/model_features.h>
+#include <CGAL/Bubble_mesh_3/internal/Neighbor_grid.h>
 #include <CGAL/Bubble_mesh_3/internal/asked_edge_length.h>
 #include <CGAL/Bubble_mesh_3/internal/remeshing_parameters.h>
 
@@ -17,16 +18,12 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Orthogonal_incremental_neighbor_search.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <cstddef>
@@ -112,16 +109,6 @@ public:
 private:
   typedef typename GeomTraits::Triangle_3 Triangle_3;
   typedef typename GeomTraits::Segment_3 Segment_3;
-  typedef CGAL::Search_traits_3<GeomTraits> Base_search_traits;
-  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Source_point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Source_point_map, Base_search_traits> Search_traits;
-  typedef CGAL::Distance_adapter<std::size_t, Source_point_map, CGAL::Euclidean_distance<Base_search_traits> >
-    Search_distance;
-  typedef CGAL::Orthogonal_incremental_neighbor_search<Search_traits, Search_distance> Incremental_search;
-  typedef typename Incremental_search::Tree Search_tree;
-  typedef CGAL::Orthogonal_k_neighbor_search<Search_traits, Search_distance, CGAL::Sliding_midpoint<Search_traits>,
-                                             Search_tree> Neighbor_search;
-  typedef CGAL::Fuzzy_sphere<Search_traits> Range;
 
 public:
   /*!
@@ -280,7 +267,7 @@ public:
     min_source_ = (std::min)(min_source_, h);
     // constraints come one by one between queries (the curves' short spans):
     // the searches are rebuilt only once many wait, the others are read one by one
-    if(source_points_.size() - searched_ > max_unsearched) levels_.clear();
+    if(source_points_.size() - searched_ > max_unsearched) grid_ready_.store(false);
   }
 
 private:
@@ -769,84 +756,75 @@ private:
     refine_ribbons_ = o.refine_ribbons_;
     slope_ = o.slope_; min_source_ = o.min_source_; smallest_thickness_ = o.smallest_thickness_;
     patch_size_ = o.patch_size_; source_points_ = o.source_points_; source_sizes_ = o.source_sizes_;
-    levels_.clear(); // rebuilt on demand
+    grid_ready_.store(false); // rebuilt on demand
     searched_ = 0;
   }
 
-  // Sources are grouped in levels of sizes within a factor 2, each with its
-  // own search: a level whose smallest size plus the slope times the
-  // distance cannot beat the best value so far is left at once.
-  void build_tree() const
+  // The sources in a grid of cells of half the largest patch size (a query's
+  // reach where the sizes are coarse), each cell with its smallest size. A
+  // query walks the cells nearest first, skips a cell whose smallest size plus
+  // the slope times its distance cannot lower the value, and stops where the
+  // smallest size of all cannot. A minimum does not depend on the order.
+  void build_grid() const
   {
+    if(grid_ready_.load(std::memory_order_acquire)) return;
     std::lock_guard<std::mutex> lock(build_mutex_);
-    if(!levels_.empty() || source_points_.empty()) return;
-    searched_ = source_points_.size();
-    std::vector<std::size_t> order(source_points_.size());
-    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return source_sizes_[a] < source_sizes_[b]; });
-    std::size_t first = 0;
-    while(first < order.size())
+    if(grid_ready_.load(std::memory_order_relaxed)) return;
+    const std::size_t n = source_points_.size();
+    CGAL_precondition(n < std::size_t(internal::Neighbor_grid::none));
+    std::vector<double> x(n), y(n), z(n);
+    const double inf = std::numeric_limits<double>::infinity();
+    double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
+    for(std::size_t i = 0; i < n; ++i)
     {
-      const double lo = source_sizes_[order[first]];
-      std::size_t last = first;
-      while(last < order.size() && source_sizes_[order[last]] <= 2. * lo) ++last;
-      std::shared_ptr<Level> level(new Level);
-      level->min_size = lo;
-      for(std::size_t k = first; k < last; ++k)
+      const Point_3& q = source_points_[i];
+      x[i] = CGAL::to_double(q.x());
+      y[i] = CGAL::to_double(q.y());
+      z[i] = CGAL::to_double(q.z());
+      const double c[3] = {x[i], y[i], z[i]};
+      for(int d = 0; d < 3; ++d)
       {
-        level->points.push_back(source_points_[order[k]]);
-        level->sizes.push_back(source_sizes_[order[k]]);
+        lo[d] = (std::min)(lo[d], c[d]);
+        hi[d] = (std::max)(hi[d], c[d]);
       }
-      std::vector<std::size_t> ids(level->points.size());
-      for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
-      Source_point_map pmap = CGAL::make_property_map(static_cast<const std::vector<Point_3>&>(level->points));
-      level->tree.reset(new Search_tree(ids.begin(), ids.end(), typename Search_tree::Splitter(), Search_traits(pmap)));
-      level->tree->build();
-      levels_.push_back(level);
-      first = last;
     }
+    grid_.set_domain(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2], 0.5 * max_patch_size_,
+                     (std::max)(std::size_t(1) << 16, 2 * n));
+    grid_.build(x.data(), y.data(), z.data(), n, nullptr, source_sizes_.data());
+    cell_min_size_.assign(grid_.number_of_cells(), inf);
+    grid_min_size_ = inf;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      double& m = cell_min_size_[grid_.cell_of(x[i], y[i], z[i])];
+      m = (std::min)(m, source_sizes_[i]);
+      grid_min_size_ = (std::min)(grid_min_size_, source_sizes_[i]);
+    }
+    searched_ = n;
+    grid_ready_.store(true, std::memory_order_release);
   }
 
   double cone(const Point_3& p, double cap) const
   {
     if(source_points_.empty() || !(min_source_ < cap)) return cap;
-    build_tree();
+    build_grid();
     double best = cap;
     for(std::size_t i = searched_; i < source_points_.size(); ++i)
       best = (std::min)(best, source_sizes_[i] + slope_ * std::sqrt(CGAL::to_double(
                                                         CGAL::squared_distance(p, source_points_[i]))));
-    thread_local std::vector<std::size_t> near;
-    for(const std::shared_ptr<Level>& level : levels_)
-    {
-      if(!(level->min_size < best)) break;
-      Source_point_map pmap = CGAL::make_property_map(static_cast<const std::vector<Point_3>&>(level->points));
-      // the nearest source of the level first, then all that can still do better
-      Neighbor_search nearest(*level->tree, p, 1, 0., true, Search_distance(pmap));
-      double d1 = 0.;
-      for(auto it = nearest.begin(); it != nearest.end(); ++it)
-      {
-        d1 = std::sqrt(CGAL::to_double(it->second));
-        best = (std::min)(best, level->sizes[it->first] + slope_ * d1);
-      }
-      if(!(level->min_size + slope_ * d1 < best)) continue;
-      const double radius = (best - level->min_size) / slope_;
-      near.clear();
-      level->tree->search(std::back_inserter(near), Range(p, radius, 0., Search_traits(pmap)));
-      for(std::size_t i : near)
-        best = (std::min)(best, level->sizes[i] + slope_ * std::sqrt(CGAL::to_double(
-                                                                 CGAL::squared_distance(p, level->points[i]))));
-    }
+    if(!(grid_min_size_ < best)) return best;
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+    grid_.for_each_cell_in_shells(
+      x, y, z, [&](double gap) { return !(grid_min_size_ + slope_ * gap < best); },
+      [&](std::size_t c, double gap, const double* q, std::size_t count) {
+        if(!(cell_min_size_[c] + slope_ * gap < best)) return;
+        for(std::size_t k = 0; k < count; ++k, q += 4)
+        {
+          const double dx = x - q[0], dy = y - q[1], dz = z - q[2];
+          best = (std::min)(best, q[3] + slope_ * std::sqrt(dx * dx + dy * dy + dz * dz));
+        }
+      });
     return best;
   }
-
-  struct Level
-  {
-    double min_size = 0.;
-    std::vector<Point_3> points;
-    std::vector<double> sizes;
-    std::unique_ptr<Search_tree> tree;
-  };
 
   double diagonal_ = 0., user_size_ = 0., max_patch_size_ = 0.;
   double elements_across_ = 2., minimum_size_ = 0., grading_ = 1.5, slope_ = 0.5;
@@ -856,8 +834,11 @@ private:
   std::vector<double> patch_size_;
   std::vector<Point_3> source_points_;
   std::vector<double> source_sizes_;
-  mutable std::vector<std::shared_ptr<Level> > levels_;
-  // sources [0, searched_) are in `levels_`, the others are read one by one
+  mutable internal::Neighbor_grid grid_;
+  mutable std::vector<double> cell_min_size_;
+  mutable double grid_min_size_ = std::numeric_limits<double>::infinity();
+  mutable std::atomic<bool> grid_ready_{false};
+  // sources [0, searched_) are in `grid_`, the others are read one by one
   mutable std::size_t searched_ = 0;
   static constexpr std::size_t max_unsearched = 256;
   mutable std::mutex build_mutex_;
