@@ -761,10 +761,8 @@ private:
   }
 
   // The sources in a grid of cells of half the largest patch size (a query's
-  // reach where the sizes are coarse), each cell with its smallest size. A
-  // query walks the cells nearest first, skips a cell whose smallest size plus
-  // the slope times its distance cannot lower the value, and stops where the
-  // smallest size of all cannot. A minimum does not depend on the order.
+  // reach where the sizes are coarse), each cell with its smallest size, for
+  // the walk of `internal::Cell_minima::cone_minimum()`.
   void build_grid() const
   {
     if(grid_ready_.load(std::memory_order_acquire)) return;
@@ -791,14 +789,7 @@ private:
     grid_.set_domain(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2], 0.5 * max_patch_size_,
                      (std::max)(std::size_t(1) << 16, 2 * n));
     grid_.build(x.data(), y.data(), z.data(), n, nullptr, source_sizes_.data());
-    cell_min_size_.assign(grid_.number_of_cells(), inf);
-    grid_min_size_ = inf;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      double& m = cell_min_size_[grid_.cell_of(x[i], y[i], z[i])];
-      m = (std::min)(m, source_sizes_[i]);
-      grid_min_size_ = (std::min)(grid_min_size_, source_sizes_[i]);
-    }
+    cell_min_size_.build(grid_, x.data(), y.data(), z.data(), source_sizes_.data(), n);
     searched_ = n;
     grid_ready_.store(true, std::memory_order_release);
   }
@@ -811,19 +802,8 @@ private:
     for(std::size_t i = searched_; i < source_points_.size(); ++i)
       best = (std::min)(best, source_sizes_[i] + slope_ * std::sqrt(CGAL::to_double(
                                                         CGAL::squared_distance(p, source_points_[i]))));
-    if(!(grid_min_size_ < best)) return best;
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-    grid_.for_each_cell_in_shells(
-      x, y, z, [&](double gap) { return !(grid_min_size_ + slope_ * gap < best); },
-      [&](std::size_t c, double gap, const double* q, std::size_t count) {
-        if(!(cell_min_size_[c] + slope_ * gap < best)) return;
-        for(std::size_t k = 0; k < count; ++k, q += 4)
-        {
-          const double dx = x - q[0], dy = y - q[1], dz = z - q[2];
-          best = (std::min)(best, q[3] + slope_ * std::sqrt(dx * dx + dy * dy + dz * dz));
-        }
-      });
-    return best;
+    return cell_min_size_.cone_minimum(grid_, CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                       CGAL::to_double(p.z()), slope_, best);
   }
 
   double diagonal_ = 0., user_size_ = 0., max_patch_size_ = 0.;
@@ -835,8 +815,7 @@ private:
   std::vector<Point_3> source_points_;
   std::vector<double> source_sizes_;
   mutable internal::Neighbor_grid grid_;
-  mutable std::vector<double> cell_min_size_;
-  mutable double grid_min_size_ = std::numeric_limits<double>::infinity();
+  mutable internal::Cell_minima cell_min_size_;
   mutable std::atomic<bool> grid_ready_{false};
   // sources [0, searched_) are in `grid_`, the others are read one by one
   mutable std::size_t searched_ = 0;

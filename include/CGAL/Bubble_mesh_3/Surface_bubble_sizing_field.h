@@ -126,7 +126,7 @@ private:
     bool has_grid = false;
     // the smallest radius in each cell of the grid: the graded bound skips the
     // cells whose bubbles are all too far for their size to lower it
-    std::vector<double> cell_min_radius;
+    internal::Cell_minima cell_min_radius;
   };
 
 public:
@@ -237,12 +237,7 @@ public:
                            *std::max_element(y.begin(), y.end()), *std::max_element(z.begin(), z.end()),
                            0.5 * range, 4 * n + 64);
         rd.grid.build(x.data(), y.data(), z.data(), n, nullptr, rd.radii.data());
-        rd.cell_min_radius.assign(rd.grid.number_of_cells(), std::numeric_limits<double>::infinity());
-        for(std::size_t i = 0; i < n; ++i)
-        {
-          double& m = rd.cell_min_radius[rd.grid.cell_of(x[i], y[i], z[i])];
-          m = (std::min)(m, rd.radii[i]);
-        }
+        rd.cell_min_radius.build(rd.grid, x.data(), y.data(), z.data(), rd.radii.data(), n);
         rd.has_grid = true;
       }
     }
@@ -380,19 +375,9 @@ private:
       // sought up to (bound - r_min) / g away), and where the bubbles near p are
       // large the region's r_min says little: the tree's walk, bounded by r_min
       // alone, visited thousands of bubbles a query (a third of modelA1's run
-      // at g = 0.12). A minimum does not depend on the order: the same bits.
-      const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-      rd.grid.for_each_cell_in_shells(
-        x, y, z, [&](double gap) { return !(rd.r_min + gradation_ * gap < bound); },
-        [&](std::size_t c, double gap, const double* q, std::size_t count) {
-          if(!(rd.cell_min_radius[c] + gradation_ * gap < bound)) return;
-          for(std::size_t k = 0; k < count; ++k, q += 4)
-          {
-            const double dx = q[0] - x, dy = q[1] - y, dz = q[2] - z;
-            bound = (std::min)(bound, q[3] + gradation_ * std::sqrt(dx * dx + dy * dy + dz * dz));
-          }
-        });
-      return bound;
+      // at g = 0.12).
+      return rd.cell_min_radius.cone_minimum(rd.grid, CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                             CGAL::to_double(p.z()), gradation_, bound);
     }
     Incremental_search search(*rd.tree, p, 0., true, Distance(Point_map(rd.centres.data())));
     for(auto it = search.begin(); it != search.end(); ++it)

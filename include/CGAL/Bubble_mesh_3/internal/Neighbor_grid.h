@@ -396,6 +396,57 @@ private:
   Neighbor_grid small_grid_, large_grid_;
 };
 
+/*
+The smallest value in each cell of a `Neighbor_grid` built with values (the
+radii of `build()`), for the walk that seeks min_i (v_i + slope |x - x_i|) -
+a size that grows at most `slope` per unit of distance from each point: a
+cell whose smallest value plus the slope times its distance cannot lower the
+minimum so far is skipped, and the walk ends where the smallest value of all
+cannot. A minimum does not depend on the order of the walk, so the result is
+the same bits as a scan of every point.
+*/
+class Cell_minima
+{
+public:
+  /// `grid` was built from these `n` points and values
+  void build(const Neighbor_grid& grid, const double* x, const double* y, const double* z, const double* v,
+             std::size_t n)
+  {
+    cell_min_.assign(grid.number_of_cells(), (std::numeric_limits<double>::infinity)());
+    smallest_ = (std::numeric_limits<double>::infinity)();
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      double& m = cell_min_[grid.cell_of(x[i], y[i], z[i])];
+      m = (std::min)(m, v[i]);
+      smallest_ = (std::min)(smallest_, v[i]);
+    }
+  }
+
+  /// the smallest value of all
+  double smallest() const { return smallest_; }
+
+  /// min(bound, min_i (v_i + slope |(x, y, z) - x_i|)) over the points of `grid`
+  double cone_minimum(const Neighbor_grid& grid, double x, double y, double z, double slope, double bound) const
+  {
+    if(!(smallest_ < bound)) return bound;
+    grid.for_each_cell_in_shells(
+      x, y, z, [&](double gap) { return !(smallest_ + slope * gap < bound); },
+      [&](std::size_t c, double gap, const double* q, std::size_t count) {
+        if(!(cell_min_[c] + slope * gap < bound)) return;
+        for(std::size_t k = 0; k < count; ++k, q += 4)
+        {
+          const double dx = x - q[0], dy = y - q[1], dz = z - q[2];
+          bound = (std::min)(bound, q[3] + slope * std::sqrt(dx * dx + dy * dy + dz * dz));
+        }
+      });
+    return bound;
+  }
+
+private:
+  std::vector<double> cell_min_;
+  double smallest_ = (std::numeric_limits<double>::infinity)();
+};
+
 } // namespace internal
 } // namespace Bubble_mesh_3
 } // namespace CGAL
