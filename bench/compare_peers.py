@@ -423,6 +423,8 @@ def run_row(ctx, key, args, tools, avail, deadline):
             "share_under_10_not_at_small_surface_angle")
         row["share_under_10_at_sharp_contact"] = a["smallest_dihedral_angle"].get(
             "share_under_10_at_sharp_contact")
+        row["share_under_10_touching_nothing"] = a["smallest_dihedral_angle"].get(
+            "share_under_10_not_touching_small_surface_angle")
         row["mean_smallest_dihedral"] = a["smallest_dihedral_angle"]["mean"]
         row["aspect_ratio_median"] = a["aspect_ratio"]["median"]
         if ctx["region_volumes"]:
@@ -466,16 +468,19 @@ def fmt(v, spec):
 
 
 def unexplained_cell(r):
-    """share under 10 degrees no surface angle explains, with the part next to a sharp contact"""
+    """share under 10 degrees no surface angle explains, with the parts next to a sharp contact and
+    with no vertex on a surface angle under 10 either"""
     u, s = r.get("share_under_10_unexplained"), r.get("share_under_10_at_sharp_contact")
+    t = r.get("share_under_10_touching_nothing")
     if u is None:
         return "-"
-    return "%.2f" % (100.0 * u) + ("" if s is None else " (%.2f)" % (100.0 * s))
+    parts = ["%.2f" % (100.0 * x) for x in (s, t) if x is not None]
+    return "%.2f" % (100.0 * u) + (" (%s)" % "; ".join(parts) if parts else "")
 
 
 def markdown_table(rows):
     head = ("| model | mesher | tets | vertices | CPU (s) | wall (s) | peak memory (MiB) | min dihedral | % under 10 deg "
-            "| % under 10 deg, no surface angle under 10 (of them next to a sharp contact) | mean smallest dihedral | AR median "
+            "| % under 10 deg, no surface angle under 10 (of them: next to a sharp contact; with no vertex on one either) | mean smallest dihedral | AR median "
             "| input triangles kept whole | region volume error | error |")
     lines = [head, "|" + "---|" * 15]
     for r in rows:

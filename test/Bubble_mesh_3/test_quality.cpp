@@ -236,6 +236,26 @@ static void test_report()
   assert(r.worst_tetrahedra[0].boundary_faces == 1);
   assert(r.worst_tetrahedra[0].touching_patches == std::vector<int>{3});
   check_near("share under 10 unexplained", r.all.share_under_10_not_at_small_surface_angle, 1. / 3.);
+  check_near("share under 10 touching nothing", r.all.share_under_10_not_touching_small_surface_angle, 1. / 3.);
+  {
+    // a needle triangle (angle 0.06 degrees) through the sliver's vertex 4 only:
+    // the sliver shares no edge with it, so it stays unexplained, but it
+    // touches a small surface angle at a point
+    BM::Labeled_tetrahedral_mesh_3 mn = m;
+    const std::array<double, 3> p4 = mn.points[4];
+    mn.points.push_back({{p4[0] + 100., p4[1], p4[2]}});
+    mn.points.push_back({{p4[0] + 100., p4[1] + 0.1, p4[2]}});
+    mn.boundary_triangles.push_back({{4, mn.points.size() - 2, mn.points.size() - 1}});
+    mn.boundary_patches.push_back(6);
+    const BM::Mesh_quality_report rn = BM::compute_mesh_quality(mn);
+    check_near("needle at a vertex: share under 10 unexplained", rn.all.share_under_10_not_at_small_surface_angle,
+               1. / 3.);
+    check_near("needle at a vertex: share under 10 touching nothing",
+               rn.all.share_under_10_not_touching_small_surface_angle, 0.);
+    std::ostringstream json;
+    BM::IO::write_quality_report_json(json, rn);
+    assert(json.str().find("\"share_under_10_not_touching_small_surface_angle\": 0") != std::string::npos);
+  }
   // given input angles: the sliver's triangle came from an input triangle with a 5-degree angle
   m.input_min_angles = {5., 50.};
   r = BM::compute_mesh_quality(m);

@@ -147,6 +147,13 @@ struct Region_quality
   /// whatever the mesher does, and one of size L fits across the wedge
   /// nowhere nearer than L / theta. NaN as above.
   double share_under_10_at_sharp_contact = std::nan("");
+  /// share of tets counted by `share_under_10_not_at_small_surface_angle`
+  /// that also have no vertex on a surface triangle whose surface angle is
+  /// under 10 degrees: the small dihedrals nothing in the input touches, even
+  /// at a point. Near a needle triangle (kept input surfaces) the tets around
+  /// its vertices are crowded by its short edge without sharing an edge with
+  /// it; this share leaves those out. NaN as above.
+  double share_under_10_not_touching_small_surface_angle = std::nan("");
 
   double min_face_angle = std::nan("");         ///< smallest of the 12 n face angles
   double max_face_angle = std::nan("");         ///< largest of the 12 n face angles

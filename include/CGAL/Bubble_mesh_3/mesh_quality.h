@@ -220,6 +220,7 @@ struct Region_accumulator
   double dihedral_sum = 0., smallest_dihedral_sum = 0.;
   std::array<std::size_t, 4> under = {{0, 0, 0, 0}};
   std::size_t above_10 = 0, above_40 = 0, under_10_unexplained = 0, under_10_at_sharp_contact = 0;
+  std::size_t under_10_not_touching = 0; // of the unexplained, no vertex on a small surface angle either
 
   void add(const Tetrahedron_quality& t, bool unexplained_under_10)
   {
@@ -271,6 +272,7 @@ struct Region_accumulator
     above_40 += o.above_40;
     under_10_unexplained += o.under_10_unexplained;
     under_10_at_sharp_contact += o.under_10_at_sharp_contact;
+    under_10_not_touching += o.under_10_not_touching;
   }
 
   Region_quality finish(std::size_t number_of_vertices, bool surfaces_known)
@@ -287,6 +289,7 @@ struct Region_accumulator
       {
         q.share_under_10_not_at_small_surface_angle = double(under_10_unexplained) / dn;
         q.share_under_10_at_sharp_contact = double(under_10_at_sharp_contact) / dn;
+        q.share_under_10_not_touching_small_surface_angle = double(under_10_not_touching) / dn;
       }
       q.min_aspect_ratio = *std::min_element(aspect_ratios.begin(), aspect_ratios.end());
       q.max_aspect_ratio = *std::max_element(aspect_ratios.begin(), aspect_ratios.end());
@@ -316,6 +319,7 @@ public:
     CGAL_precondition(m.boundary_patches.empty() || m.boundary_patches.size() == m.boundary_triangles.size());
     CGAL_precondition(m.input_min_angles.empty() || m.input_min_angles.size() == m.boundary_triangles.size());
     const std::size_t nb = m.boundary_triangles.size();
+    vertex_min_angles_.assign(m.points.size(), std::nan(""));
     for(std::size_t i = 0; i < nb; ++i)
     {
       const std::array<std::size_t, 3>& t = m.boundary_triangles[i];
@@ -324,7 +328,10 @@ public:
         angle = smallest_triangle_angle(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
       const int patch = m.boundary_patches.empty() ? 0 : m.boundary_patches[i];
       for(int k = 0; k < 3; ++k)
+      {
         entries_.push_back(std::make_tuple(edge(t[k], t[(k + 1) % 3]), patch, angle));
+        vertex_min_angles_[t[k]] = std::fmin(vertex_min_angles_[t[k]], angle);
+      }
       std::array<std::size_t, 3> s = t;
       std::sort(s.begin(), s.end());
       faces_.push_back(s);
@@ -361,6 +368,14 @@ public:
       std::sort(patches->begin(), patches->end());
       patches->erase(std::unique(patches->begin(), patches->end()), patches->end());
     }
+    return r;
+  }
+
+  // smallest surface angle over the triangles with a vertex of `tet` (NaN: none, or unknown)
+  double vertex_touching_min_angle(const std::array<std::size_t, 4>& tet) const
+  {
+    double r = std::nan("");
+    for(std::size_t v : tet) r = std::fmin(r, vertex_min_angles_[v]);
     return r;
   }
 
@@ -401,6 +416,7 @@ private:
 
   std::vector<Entry> entries_;
   std::vector<std::array<std::size_t, 3> > faces_;
+  std::vector<double> vertex_min_angles_; // by point: smallest surface angle of its triangles, NaN if none
 };
 
 // The angles of each region between the surfaces at the boundary edges. Around
@@ -615,7 +631,9 @@ further counted "at a sharp contact" when one of its vertices lies on a
 boundary edge where its region's angle between the surfaces is under 10
 degrees (a pinch-out), or when it lies inside that angle where the wedge
 between the two surfaces is thinner than its longest edge: see
-`Region_quality::share_under_10_at_sharp_contact`.
+`Region_quality::share_under_10_at_sharp_contact`. Touching at a vertex
+only is counted apart: `Region_quality::share_under_10_not_touching_small_surface_angle`
+leaves out the tetrahedra with a vertex on a surface angle under 10.
 
 \pre every index of `mesh.tetrahedra` and `mesh.boundary_triangles` is smaller than `mesh.points.size()`,
 `mesh.regions.size() == mesh.tetrahedra.size()`
@@ -706,6 +724,9 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
     if(sectors.smallest_at(mesh.tetrahedra[i], mesh.regions[i]) < internal::Contact_sectors::sharp_angle ||
        sectors.in_thin_wedge(mesh.points, mesh.tetrahedra[i], mesh.regions[i]))
       ++per_region[mesh.regions[i]].under_10_at_sharp_contact;
+  for(std::size_t i : unexplained_under_10)
+    if(!(surfaces.vertex_touching_min_angle(mesh.tetrahedra[i]) < 10.))
+      ++per_region[mesh.regions[i]].under_10_not_touching;
 
   // distinct vertices: tets grouped by region, a stamp per point
   std::map<int, std::size_t> slot;

@@ -96,7 +96,9 @@ inline void write_region_json(std::ostream& os, const Region_quality& q, const s
      << ", \"share_under_20\": " << json_number(q.share_smallest_dihedral_under[3])
      << ", \"share_under_10_not_at_small_surface_angle\": "
      << json_number(q.share_under_10_not_at_small_surface_angle)
-     << ", \"share_under_10_at_sharp_contact\": " << json_number(q.share_under_10_at_sharp_contact) << "},\n"
+     << ", \"share_under_10_at_sharp_contact\": " << json_number(q.share_under_10_at_sharp_contact)
+     << ", \"share_under_10_not_touching_small_surface_angle\": "
+     << json_number(q.share_under_10_not_touching_small_surface_angle) << "},\n"
      << in << "\"face_angle\": {\"min\": " << json_number(q.min_face_angle)
      << ", \"max\": " << json_number(q.max_face_angle) << "},\n"
      << in << "\"aspect_ratio\": {\"min\": " << json_number(q.min_aspect_ratio)
@@ -273,7 +275,9 @@ inline void write_quality_report_text(std::ostream& os, const Mesh_quality_repor
        << "): " << percent(report.all.share_under_10_not_at_small_surface_angle)
        << " %\n  of them next to a sharp contact (surfaces meeting at under 10 degrees in their region, as at a"
           " pinch-out: a vertex on it, or inside its wedge where that is thinner than the tet): "
-       << percent(report.all.share_under_10_at_sharp_contact) << " %\n";
+       << percent(report.all.share_under_10_at_sharp_contact)
+       << " %\n  of them with no vertex on a surface angle under 10 either (touching the input nowhere): "
+       << percent(report.all.share_under_10_not_touching_small_surface_angle) << " %\n";
 
   if(!report.worst_tetrahedra.empty())
   {
@@ -349,6 +353,9 @@ inline void write_quality_comparison_text(std::ostream& os, const std::vector<Me
   });
   row("  of them at a sharp contact", [](const Mesh_quality_report& r) {
     return percent(r.all.share_under_10_at_sharp_contact);
+  });
+  row("  of them touching no surface angle < 10", [](const Mesh_quality_report& r) {
+    return percent(r.all.share_under_10_not_touching_small_surface_angle);
   });
   row("min face angle", [](const Mesh_quality_report& r) { return cell(r.all.min_face_angle, 3); });
   row("max face angle", [](const Mesh_quality_report& r) { return cell(r.all.max_face_angle, 3); });
