@@ -721,12 +721,13 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
   }
   sectors.finish(surfaces);
   for(std::size_t i : unexplained_under_10)
+  {
+    internal::Region_accumulator& acc = per_region[mesh.regions[i]];
     if(sectors.smallest_at(mesh.tetrahedra[i], mesh.regions[i]) < internal::Contact_sectors::sharp_angle ||
        sectors.in_thin_wedge(mesh.points, mesh.tetrahedra[i], mesh.regions[i]))
-      ++per_region[mesh.regions[i]].under_10_at_sharp_contact;
-  for(std::size_t i : unexplained_under_10)
-    if(!(surfaces.vertex_touching_min_angle(mesh.tetrahedra[i]) < 10.))
-      ++per_region[mesh.regions[i]].under_10_not_touching;
+      ++acc.under_10_at_sharp_contact;
+    if(!(surfaces.vertex_touching_min_angle(mesh.tetrahedra[i]) < 10.)) ++acc.under_10_not_touching;
+  }
 
   // distinct vertices: tets grouped by region, a stamp per point
   std::map<int, std::size_t> slot;

@@ -422,9 +422,6 @@ public:
     }
   }
 
-  /// the smallest value of all
-  double smallest() const { return smallest_; }
-
   /// min(bound, min_i (v_i + slope |(x, y, z) - x_i|)) over the points of `grid`
   double cone_minimum(const Neighbor_grid& grid, double x, double y, double z, double slope, double bound) const
   {
