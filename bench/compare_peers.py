@@ -276,23 +276,45 @@ def mesher_output(kind, workdir, base):
     return os.path.join(workdir, base + ".mesh")
 
 
-# The runs go in phases over all models, so that when the time budget runs out
-# it cuts the slowest runs (our re-meshed runs) of every model rather than every
-# run of the last models. The peers (one thread each) share one phase, run
-# --peer-jobs at a time: a peer run that hangs until the time limit (TetGen -pq
-# on modelA2, -pYA on modelA5) then holds one core while the others go on.
+# How the runs are scheduled. By default every run uses one thread (TetGen and
+# Gmsh's 3D Delaunay have only one; bubble_mesh_3 gets --threads 1) and --jobs of
+# them run at a time, the costliest first (longest processing time first): the
+# two-thread runs of before session 55 used 1.2-1.8 cores, and two one-thread runs
+# side by side take no longer each than one alone (modelA1 re-meshed: 91.0 s alone,
+# 91.7 s beside another). With --bubble-threads T > 1 our runs take T threads and
+# run alone after the peers, in phases over all models (sessions 26-54): the
+# peers --jobs at a time, then ours with the surfaces kept, then ours re-meshed,
+# cheapest model first.
 PEER_KEYS = ["tetgen-pq", "tetgen-pYA", "tetgen-pA", "gmsh"]
 PHASES = [PEER_KEYS, ["bubble", "bubble-keep"], ["bubble-remesh"]]
 
+# Rough one-thread seconds per unit of a model's size, its volume over the cube of
+# its median input edge (about the number of bubbles at the median size; it
+# predicted our re-meshed runs within a factor 1.6 on the models in ../shared, the
+# input triangles within 5): only the order of the runs depends on them. TetGen's
+# -pq and -pY may run until their time limit whatever the size (modelA2, modelA5),
+# so they count as long as that limit and start early.
+SECONDS_PER_SIZE = {"bubble-remesh": 1.2e-2, "bubble": 3e-3, "bubble-keep": 3e-3, "gmsh": 3e-4, "tetgen-pA": 1e-5}
+
+
+def expected_cost(ctx, key, args):
+    """A guess of a run's seconds, capped at its time limit, to start the costliest first."""
+    limit = args.remesh_timeout if key == "bubble-remesh" else \
+        (args.bubble_timeout if key.startswith("bubble") else args.timeout)
+    if key in ("tetgen-pq", "tetgen-pYA"):
+        return limit
+    guess = SECONDS_PER_SIZE[key] * (ctx["size"] if ctx["size"] is not None else 1e5)
+    return guess if limit is None else min(guess, limit)
+
 
 def phase_order(phase, contexts, done):
-    """The models in the order a phase visits them. The peers go largest model
-    first (by input triangles): the runs likely to take longest start first, so
-    that the short ones fill the other core beside them. The re-meshed runs take
-    5-15 times the surfaces-kept run of the same model: they go cheapest first
-    (by that run's time, else by input triangles), so that what is left of the
-    budget is spent on the rows that can finish, not on a large model killed
-    half-way while a small one is skipped."""
+    """The models in the order a phase of the --bubble-threads T > 1 schedule visits
+    them. The peers go largest model first (by input triangles): the runs likely to
+    take longest start first, so that the short ones fill the other core beside them.
+    The re-meshed runs take 5-15 times the surfaces-kept run of the same model: they
+    go cheapest first (by that run's time, else by input triangles), so that what is
+    left of the budget is spent on the rows that can finish, not on a large model
+    killed half-way while a small one is skipped."""
     order = list(range(len(contexts)))
 
     def triangles(i):
@@ -319,6 +341,27 @@ def phase_tasks(phase, contexts, done, selected):
     return [(i, key) for i in order for key in phase if key in selected]
 
 
+def run_rank(cost, size):
+    """Where a run goes in the one-thread schedule: the short ones (guessed under 15 s, 20-30 s
+    in all) first, so that a budget cut never takes their rows; then the costliest first (longest
+    processing time first), so that the long runs overlap and short ones fill the end."""
+    if cost < 15.0:
+        return (0, cost, 0.0)
+    return (1, -cost, -(size or 0.0))
+
+
+def schedule(contexts, selected, args):
+    """The runs as a list of (jobs at a time, [(model, mesher)] or a function of the rows
+    done so far giving them): one batch of every run, costliest first, when our runs take one
+    thread; else the phases."""
+    if args.bubble_threads == 1:
+        tasks = [(i, key) for i in range(len(contexts)) for key in MESHER_KEYS if key in selected]
+        tasks.sort(key=lambda t: run_rank(expected_cost(contexts[t[0]], t[1], args), contexts[t[0]]["size"]))
+        return [(args.jobs, tasks)]
+    return [(args.jobs if phase is PEER_KEYS else 1,
+             (lambda done, phase=phase: phase_tasks(phase, contexts, done, selected))) for phase in PHASES]
+
+
 def prepare_model(model, args, tools, out_dir):
     """The model's own numbers (volumes, from bubble_mesh_3 --check) and the peers' inputs."""
     name = model_name(model)
@@ -329,12 +372,15 @@ def prepare_model(model, args, tools, out_dir):
     r = run([tools["bubble_mesh_3"], os.path.abspath(model), "--check", "-q", "--summary-json", summary_path],
             mdir, args.timeout, os.path.join(mdir, "check.log"), use_time=False)
     region_volumes = None  # region index -> volume
-    triangles = None
+    triangles = size = None
     if r["status"] == "ok":
         with open(summary_path) as f:
             s = json.load(f)
         region_volumes = {reg["index"]: reg["volume"] for reg in s.get("regions", []) if reg.get("volume")}
         triangles = s.get("number_of_triangles")
+        edge = (s.get("edge_length") or {}).get("median")
+        if s.get("volume") and edge:
+            size = s["volume"] / edge ** 3
     else:
         print("   bubble_mesh_3 --check: %s %s" % (r["status"], r["reason"]))
     r = run([tools["export"], os.path.abspath(model), "--out-dir", mdir, "--name", name], mdir, args.timeout,
@@ -342,6 +388,7 @@ def prepare_model(model, args, tools, out_dir):
     if r["status"] != "ok":
         print("   export_peer_inputs: %s %s" % (r["status"], r["reason"]))
     return {"model": model, "name": name, "mdir": mdir, "region_volumes": region_volumes, "triangles": triangles,
+            "size": size,
             "export_ok": os.path.exists(os.path.join(mdir, name + ".poly"))}
 
 
@@ -390,7 +437,8 @@ def run_row(ctx, key, args, tools, avail, deadline):
         cmd = [DEBIAN_PYTHON, os.path.abspath(__file__), "--gmsh-worker",
                os.path.join(mdir, name + ".surf.msh"), os.path.join(mdir, name + ".regions.json"), out]
     else:
-        cmd = [tools["bubble_mesh_3"], os.path.abspath(model), "-o", out] + extra + args.bubble_args
+        cmd = [tools["bubble_mesh_3"], os.path.abspath(model), "-o", out, "--threads", str(args.bubble_threads)] + \
+            extra + args.bubble_args
     row["command"] = " ".join(shlex.quote(c) for c in cmd)
     res = run(cmd, wdir, run_timeout, os.path.join(wdir, "run.log"))
     row["status"] = res["status"]
@@ -530,27 +578,35 @@ def main():
     p.add_argument("--build-dir", default=os.path.join(REPO, "build-bench"),
                    help="CMake build folder with the programs (default: %(default)s)")
     p.add_argument("--out", default=None, help="output folder (default: BUILD_DIR/compare_peers)")
-    p.add_argument("--timeout", type=float, default=150.0, help="time limit per run in seconds (default: %(default)s)")
-    # modelA2 with the surfaces kept takes 150-152 s here; the peer runs that reach
-    # 150 s (TetGen -pq on modelA2, -pYA on modelA5) did not finish in 420-500 s either
+    p.add_argument("--timeout", type=float, default=120.0,
+                   help="time limit per peer run, and per measurement of a mesh, in seconds (default: %(default)s)")
+    # The slowest peer run that finishes, TetGen -pq on CloudSpin, takes 91-108 s here;
+    # those that reach the limit (TetGen -pq on modelA2, -pYA on modelA5) did not
+    # finish in 420-500 s either
     p.add_argument("--bubble-timeout", type=float, default=200.0,
                    help="time limit per bubble_mesh_3 run with the surfaces kept, in seconds (default: %(default)s)")
     p.add_argument("--remesh-timeout", type=float, default=None,
                    help="time limit per bubble_mesh_3 --remesh-surfaces run in seconds (default: what is left "
-                        "of the budget; these runs come last, cheapest model first)")
-    p.add_argument("--budget", type=float, default=800.0,
+                        "of the budget)")
+    p.add_argument("--budget", type=float, default=870.0,
                    help="time budget of the whole run in seconds: a run gets at most what is left, and runs "
                         "are skipped (and say so) once it is used up (default: %(default)s)")
     p.add_argument("--meshers", default=",".join(DEFAULT_MESHERS),
                    help="comma-separated subset of: %s (default: all but bubble-keep)" % ",".join(MESHER_KEYS))
-    p.add_argument("--peer-jobs", type=int, default=min(2, os.cpu_count() or 1),
-                   help="peer runs (TetGen, Gmsh: one thread each) run this many at a time; our own runs, which "
-                        "use every core, always run alone (default: %(default)s, at most 2 and the number of CPUs)")
-    p.add_argument("--bubble-args", default="", help="extra arguments for bubble_mesh_3 (quoted, e.g. '--threads 2')")
+    p.add_argument("--jobs", "--peer-jobs", dest="jobs", type=int, default=min(2, os.cpu_count() or 1),
+                   help="runs at a time, each on one thread (TetGen; Gmsh's 3D Delaunay; bubble_mesh_3 with "
+                        "--threads 1), the costliest first; with --bubble-threads T > 1 only the peers' runs go "
+                        "this many at a time, ours alone (default: %(default)s, at most 2 and the number of CPUs)")
+    p.add_argument("--bubble-threads", type=int, default=1,
+                   help="threads of each bubble_mesh_3 run; above 1 our runs run alone, after the peers "
+                        "(default: %(default)s, like the peers)")
+    p.add_argument("--bubble-args", default="", help="extra arguments for bubble_mesh_3 (quoted, e.g. '--seed 1')")
     args = p.parse_args()
     args.bubble_args = shlex.split(args.bubble_args)
-    if args.peer_jobs < 1:
-        fail("--peer-jobs takes a number >= 1, got %d" % args.peer_jobs)
+    if args.jobs < 1:
+        fail("--jobs takes a number >= 1, got %d" % args.jobs)
+    if args.bubble_threads < 1:
+        fail("--bubble-threads takes a number >= 1, got %d" % args.bubble_threads)
 
     selected = [s.strip() for s in args.meshers.split(",") if s.strip()]
     bad = [s for s in selected if s not in MESHER_KEYS]
@@ -575,40 +631,49 @@ def main():
     deadline = start + args.budget
     contexts = [prepare_model(m, args, tools, out_dir) for m in models]
     done = [[] for _ in models]  # rows per model
-    for phase in PHASES:
-        tasks = phase_tasks(phase, contexts, done, selected)
-        # The peers run on one thread each (TetGen; Gmsh's 3D Delaunay by default), so
-        # their phase runs --peer-jobs rows at a time; our runs take every core, one at a time.
-        jobs = args.peer_jobs if phase is PEER_KEYS else 1
+    # A model's histograms are drawn once its last row is measured, in the same pool
+    # (behind the runs already queued: beside the last long runs); with our runs alone
+    # (--bubble-threads T > 1), after all runs.
+    drawn = {}  # model index -> future of its histograms' path
+    for jobs, tasks in schedule(contexts, selected, args):
+        if callable(tasks):
+            tasks = tasks(done)
         with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-            futures = [(i, pool.submit(run_row, contexts[i], key, args, tools, avail, deadline)) for i, key in tasks]
-            for i, f in futures:
-                done[i].append(f.result())
-    rows, svgs = [], {}
+            pending = {pool.submit(run_row, contexts[i], key, args, tools, avail, deadline): i for i, key in tasks}
+            while pending:
+                finished, _ = concurrent.futures.wait(pending, return_when=concurrent.futures.FIRST_COMPLETED)
+                for f in finished:
+                    i = pending.pop(f)
+                    done[i].append(f.result())
+                    if len(done[i]) == len(selected) and jobs > 1:
+                        done[i].sort(key=lambda r: MESHER_KEYS.index(r["key"]))
+                        drawn[i] = pool.submit(draw_histograms, contexts[i], done[i], args, tools, out_dir)
     for model_rows in done:
         model_rows.sort(key=lambda r: MESHER_KEYS.index(r["key"]))
-        rows += model_rows
-    # drawing reads every mesh of a model on one thread (7 s for modelA2's three): --peer-jobs models at a time
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.peer_jobs) as pool:
-        drawn = [pool.submit(draw_histograms, ctx, model_rows, args, tools, out_dir)
-                 for ctx, model_rows in zip(contexts, done)]
-        for ctx, f in zip(contexts, drawn):
-            svg = f.result()
-            if svg:
-                svgs[ctx["name"]] = svg
+    # drawing reads every mesh of a model on one thread (7 s for modelA2's three): --jobs models at a time
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        for i, ctx in enumerate(contexts):
+            if i not in drawn:
+                drawn[i] = pool.submit(draw_histograms, ctx, done[i], args, tools, out_dir)
+    rows, svgs = [], {}
+    for i, ctx in enumerate(contexts):
+        rows += done[i]
+        svg = drawn[i].result()
+        if svg:
+            svgs[ctx["name"]] = svg
     total = time.perf_counter() - start
     load_end = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
 
     info = {"command": command, "machine": os.uname().nodename, "cpus": os.cpu_count(),
             "load_average_at_start": load, "load_average_at_end": load_end, "timeout_s": args.timeout, "budget_s": args.budget, "total_s": total,
-            "peer_jobs": args.peer_jobs,
+            "jobs": args.jobs, "bubble_threads": args.bubble_threads,
             "tetgen": shutil.which("tetgen"), "rows": rows, "histograms": svgs}
     with open(os.path.join(out_dir, "compare_peers.json"), "w") as f:
         json.dump(info, f, indent=1)
     md = ["# compare_peers\n", "Command: `%s` (total %.0f s, %s CPUs, load average %.1f at start and %.1f at the end, "
-          "time limit %g s per run, budget %g s, peer runs %d at a time)\n" % (
+          "time limit %g s per run, budget %g s, %d runs at a time, bubble_mesh_3 on %d thread%s)\n" % (
               command, total, os.cpu_count(), load or 0.0, load_end or 0.0, args.timeout, args.budget,
-              args.peer_jobs), "",
+              args.jobs, args.bubble_threads, "" if args.bubble_threads == 1 else "s"), "",
           markdown_table(rows), ""]
     for n, s in svgs.items():
         sections = s[:-len(".svg")] + "_sections.svg"

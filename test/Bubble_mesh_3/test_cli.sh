@@ -468,8 +468,11 @@ check "--help lists --population-rounds" bash -c "'$exe' --help | grep -q -- --p
 run "$model" --population-tolerance 0.1 --no-sliver-removal --threads 2
 check "--population-tolerance 0.1 exits 0" test "$rc" -eq 0
 b_loose="$(mesh_bubbles)"
-echo "  bundled model's bubbles with population tolerance 0.1 / 0.002 (default): $b_loose / $b12"
-check "--population-tolerance 0.1 changes the population" test -n "$b_loose" -a "${b_loose:-x}" != "${b12:-y}"
+run "$model" --population-tolerance 0.0005 --no-sliver-removal --threads 2
+b_strict="$(mesh_bubbles)"
+echo "  bundled model's bubbles with population tolerance 0.1 / 0.005 (default) / 0.0005: $b_loose / $b12 / $b_strict"
+check "--population-tolerance 0.1 and 0.0005 end with other populations" \
+  test -n "$b_loose" -a -n "$b_strict" -a "${b_loose:-x}" != "${b_strict:-y}"
 run "$model" --population-tolerance 0
 check "--population-tolerance 0 exits 2" test "$rc" -eq 2
 check "--population-tolerance 0 says what it takes" contains "$err" "above 0 and at most 0.1"

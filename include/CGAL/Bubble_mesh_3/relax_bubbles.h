@@ -1399,7 +1399,7 @@ the end.
   \cgalParamNEnd
   \cgalParamNBegin{population_tolerance}
     \cgalParamDescription{the population has settled when a round adds and removes at most this share of it (or one bubble)}
-    \cgalParamType{`double`} \cgalParamDefault{`default_population_tolerance` (0.002)}
+    \cgalParamType{`double`} \cgalParamDefault{`default_population_tolerance` (0.005)}
   \cgalParamNEnd
   \cgalParamNBegin{insertion_clearance}
     \cgalParamDescription{least distance, over the sum of radii, from an inserted bubble to all others; the cubic
