@@ -503,7 +503,12 @@ struct Crowded_cube
 
 // -- 5c. resting bubbles (resting_displacement_ratio): the same pipeline with
 // every bubble moved at every step and with bubbles at rest left alone must
-// end as well packed, in as good an equilibrium, for fewer bubble-steps
+// end as well packed, in as good an equilibrium, for fewer bubble-steps.
+// The population tolerance is held at 0.002, the default until session 55: the
+// round the cube's population settles in sets its end state, and with it the
+// first move of a fresh relaxation, which measures that equilibrium (all moving
+// / resting, in tolerances: 17.5 / 8.7 at 0.002, 17.5 / 11.2 at 0.005, 19.1 /
+// 22.8 at 0.01), so each tolerance would ask for its own bound.
 static void test_resting()
 {
   const Crowded_cube c;
@@ -515,7 +520,8 @@ static void test_resting()
     std::vector<Bubble> interior = start;
     const double ratio = resting ? BM::internal::Dynamics_settings().rest_ratio : 0.;
     const BM::Relaxation_report rep =
-      BM::relax_bubbles(cube, surface, interior, sizing, params::resting_displacement_ratio(ratio));
+      BM::relax_bubbles(cube, surface, interior, sizing,
+                        params::resting_displacement_ratio(ratio, params::population_tolerance(0.002)));
     std::size_t outside = 0;
     const std::size_t in_ball = violations(cube, interior, L, outside);
     // from the result, with everyone moving and no population control: how far from rest was it?
@@ -540,6 +546,7 @@ static void test_resting()
   assert(bubble_steps[1] < 0.9 * bubble_steps[0]);
   // left as near rest as with everyone moving
   assert(first_move[1] < 10. * BM::internal::Dynamics_settings().tolerance);
+  assert(first_move[1] <= first_move[0]);
   assert(steps_to_rest[1] <= 2 * steps_to_rest[0] + 50);
 }
 
