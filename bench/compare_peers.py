@@ -278,13 +278,14 @@ def mesher_output(kind, workdir, base):
 
 # How the runs are scheduled. By default every run uses one thread (TetGen and
 # Gmsh's 3D Delaunay have only one; bubble_mesh_3 gets --threads 1) and --jobs of
-# them run at a time, the costliest first (longest processing time first): the
-# two-thread runs of before session 55 used 1.2-1.8 cores, and two one-thread runs
-# side by side take no longer each than one alone (modelA1 re-meshed: 91.0 s alone,
-# 91.7 s beside another). With --bubble-threads T > 1 our runs take T threads and
-# run alone after the peers, in phases over all models (sessions 26-54): the
-# peers --jobs at a time, then ours with the surfaces kept, then ours re-meshed,
-# cheapest model first.
+# them run at a time, in the order of run_rank(): the two-thread runs of before
+# session 55 used 1.2-1.8 cores, and two one-thread runs side by side take no
+# longer each than one alone (modelA1 re-meshed: 91.0 s alone, 91.7 s beside
+# another), so the whole run takes about the CPU time of its rows over --jobs
+# (837 s for the default models in session 55). With --bubble-threads T > 1 our
+# runs take T threads and run alone after the peers, in phases over all models
+# (sessions 26-54): the peers --jobs at a time, then ours with the surfaces kept,
+# then ours re-meshed, cheapest model first.
 PEER_KEYS = ["tetgen-pq", "tetgen-pYA", "tetgen-pA", "gmsh"]
 PHASES = [PEER_KEYS, ["bubble", "bubble-keep"], ["bubble-remesh"]]
 
@@ -595,7 +596,8 @@ def main():
                    help="comma-separated subset of: %s (default: all but bubble-keep)" % ",".join(MESHER_KEYS))
     p.add_argument("--jobs", "--peer-jobs", dest="jobs", type=int, default=min(2, os.cpu_count() or 1),
                    help="runs at a time, each on one thread (TetGen; Gmsh's 3D Delaunay; bubble_mesh_3 with "
-                        "--threads 1), the costliest first; with --bubble-threads T > 1 only the peers' runs go "
+                        "--threads 1), the short ones first, then the costliest; with --bubble-threads T > 1 only "
+                        "the peers' runs go "
                         "this many at a time, ours alone (default: %(default)s, at most 2 and the number of CPUs)")
     p.add_argument("--bubble-threads", type=int, default=1,
                    help="threads of each bubble_mesh_3 run; above 1 our runs run alone, after the peers "
