@@ -50,6 +50,11 @@ MESHER_KEYS = ["tetgen-pA", "tetgen-pq", "tetgen-pYA", "gmsh", "bubble", "bubble
 DEFAULT_MESHERS = [k for k in MESHER_KEYS if k != "bubble-keep"]
 
 
+def row_order(row):
+    """a model's rows in the order of MESHERS"""
+    return MESHER_KEYS.index(row["key"])
+
+
 def fail(msg):
     sys.stderr.write("compare_peers: error: %s\n" % msg)
     sys.exit(1)
@@ -494,7 +499,7 @@ def run_row(ctx, key, args, tools, avail, deadline):
 def draw_histograms(ctx, rows, args, tools, out_dir):
     """The side-by-side histograms of the model's measured meshes (and their sections through the
     middle of the model, one above the other, in NAME_sections.svg); the histograms' path, or None."""
-    measured = [r for r in rows if r["tets"] is not None]
+    measured = sorted((r for r in rows if r["tets"] is not None), key=row_order)
     if not measured:
         return None
     svg = os.path.join(out_dir, ctx["name"] + ".svg")
@@ -597,8 +602,8 @@ def main():
     p.add_argument("--jobs", "--peer-jobs", dest="jobs", type=int, default=min(2, os.cpu_count() or 1),
                    help="runs at a time, each on one thread (TetGen; Gmsh's 3D Delaunay; bubble_mesh_3 with "
                         "--threads 1), the short ones first, then the costliest; with --bubble-threads T > 1 only "
-                        "the peers' runs go "
-                        "this many at a time, ours alone (default: %(default)s, at most 2 and the number of CPUs)")
+                        "the peers' runs go this many at a time, ours alone (default: %(default)s, at most 2 and "
+                        "the number of CPUs)")
     p.add_argument("--bubble-threads", type=int, default=1,
                    help="threads of each bubble_mesh_3 run; above 1 our runs run alone, after the peers "
                         "(default: %(default)s, like the peers)")
@@ -648,10 +653,9 @@ def main():
                     i = pending.pop(f)
                     done[i].append(f.result())
                     if len(done[i]) == len(selected) and jobs > 1:
-                        done[i].sort(key=lambda r: MESHER_KEYS.index(r["key"]))
                         drawn[i] = pool.submit(draw_histograms, contexts[i], done[i], args, tools, out_dir)
     for model_rows in done:
-        model_rows.sort(key=lambda r: MESHER_KEYS.index(r["key"]))
+        model_rows.sort(key=row_order)
     # drawing reads every mesh of a model on one thread (7 s for modelA2's three): --jobs models at a time
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         for i, ctx in enumerate(contexts):
