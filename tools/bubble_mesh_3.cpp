@@ -139,24 +139,20 @@ const char* usage_text =
 "                             size whose mesh cannot fit in memory is refused at once\n"
 "  --layer-elements N         with --remesh-surfaces: edges wanted across the thickness\n"
 "                             of a thin layer, or between a fault tip and a horizon\n"
-"                             (default 2; 1 halves the sizes there, fewer tetrahedra and\n"
-"                             a faster run; 0 turns the rule off). If the surfaces it\n"
-"                             refined cannot be recovered (a pinch-out), they are\n"
-"                             re-meshed with N/2, then 0\n"
+"                             (default 1.63: two tetrahedra across; 1 gives fewer\n"
+"                             tetrahedra and a faster run, 2.45 three across; 0 turns\n"
+"                             the rule off). If the surfaces it refined cannot be\n"
+"                             recovered (a pinch-out), they are re-meshed with N/2, then 0\n"
 "  --size-grading G           with --remesh-surfaces: largest ratio between the sizes of\n"
 "                             neighbouring edges (default 1.5, above 1). Nearer 1 the\n"
 "                             sizes change more slowly away from thin layers and small\n"
-"                             features: better-shaped tetrahedra, more of them (bundled\n"
-"                             model: 1.2 gives an aspect-ratio median of 1.80 instead of\n"
-"                             1.85 with 42 % more tetrahedra)\n"
+"                             features: better-shaped tetrahedra, more of them\n"
 "  --interior-grading G       largest ratio between the radii of touching bubbles as they\n"
-"                             grow away from the surfaces (default 3, above 1). Nearer 1\n"
-"                             a body beside a thin layer keeps small tetrahedra further\n"
-"                             in: better-shaped there, more of them (bundled model\n"
-"                             re-meshed at 1.25: aspect-ratio median 1.79 instead of 1.85,\n"
-"                             22 % more tetrahedra; CloudSpin: 1.66 instead of 1.64, 23 %\n"
-"                             more: inside bodies that the surfaces coarsen faster, the\n"
-"                             jump moves to the coarse surfaces)\n"
+"                             grow away from the surfaces (above 1; default 1.25 with\n"
+"                             --remesh-surfaces, 3 with the surfaces kept). Nearer 1 a\n"
+"                             body beside a thin layer keeps small tetrahedra further in:\n"
+"                             better-shaped there, more of them. Beside kept input\n"
+"                             needles a ratio near 1 only adds small tetrahedra\n"
 "  --curvature-angle D        with --remesh-surfaces: largest turn, in degrees, of a curved\n"
 "                             surface along one new edge (default 22.5: 16 edges around a\n"
 "                             tunnel; smaller keeps curved bodies' volumes closer, with\n"
@@ -731,9 +727,12 @@ int main(int argc, char** argv)
     };
     stage_timer.start();
     // the ratio G between touching bubbles is the field's g = (G - 1) / (G + 1)
+    // (unless given, the library's default for the run: gentler on re-meshed surfaces)
+    typedef BM::Surface_bubble_sizing_field<K> Sizing;
     const double interior_gradation = opt.interior_grading > 0.
                                         ? (opt.interior_grading - 1.) / (opt.interior_grading + 1.)
-                                        : BM::Surface_bubble_sizing_field<K>::default_size_gradation;
+                                        : opt.remesh_surfaces ? Sizing::default_remeshed_size_gradation
+                                                              : Sizing::default_size_gradation;
     const auto np = BM::parameters::stage_callback(progress,
                     BM::parameters::bubble_mesh_report(&report,
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,

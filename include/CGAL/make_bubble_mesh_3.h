@@ -113,7 +113,12 @@ pinch-out, say), they are re-meshed with half as many edges across thin
 layers, then without the rule, and the stages run again
 (`Bubble_mesh_report::thickness_rule_relaxed`). On re-meshed surfaces the
 sizing field also takes `area_weighted_radius_floor(true)` unless `np` says
-otherwise: refined patches must not set the size deep inside the bodies.
+otherwise: refined patches must not set the size deep inside the bodies; and
+`size_gradation(Surface_bubble_sizing_field::default_remeshed_size_gradation)`
+(touching bubbles' radii within a ratio of 1.25, not 3): the sizes then grow
+away from a thin layer's fine surfaces as slowly inside the bodies as on the
+surfaces. With the surfaces kept it would keep the bubbles small deep inside
+beside the input's needles, which only adds tetrahedra there.
 
 The model must be valid (`validate_geological_model()`); the stages assume
 it. Each stage is a free function that can be called alone; this function
@@ -208,10 +213,15 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     timed("surface bubbles", report->time_surface_bubbles, [&] {
       surface_bubbles = place_surface_bubbles(meshed, np);
       // re-meshed surfaces have no huge triangles: R0 may then look at the area the sizes cover
+      typedef Surface_bubble_sizing_field<GeomTraits> Sizing;
+      const double gradation = choose_parameter(get_parameter(np, internal_np::size_gradation),
+                                                report->surfaces_remeshed ? Sizing::default_remeshed_size_gradation
+                                                                          : Sizing::default_size_gradation);
       sizing.emplace(meshed, surface_bubbles,
                      parameters::area_weighted_radius_floor(
                        choose_parameter(get_parameter(np, internal_np::area_weighted_radius_floor),
-                                        report->surfaces_remeshed), np));
+                                        report->surfaces_remeshed),
+                       parameters::size_gradation(gradation, np)));
     });
     report->number_of_surface_bubbles = surface_bubbles.size();
 

@@ -357,7 +357,7 @@ check "--remesh-surfaces: same mesh with 1 and 2 threads" cmp -s "$tmp/r1.mesh" 
 
 # --layer-elements: a slab 1 x 1 x 0.1 re-meshed at a size of 25 % of its diagonal (0.35);
 # the thickness rule asks for N edges across the 0.1 between top and bottom, so the
-# re-meshed surfaces must get finer with N: 0 (rule off) < 1 < 2
+# re-meshed surfaces must get finer with N: 0 (rule off) < 1 < 1.63 (the default)
 python3 - "$tmp/slab.obj" <<'PY'
 import sys
 h=0.1
@@ -381,8 +381,8 @@ n1="$(slab_triangles)"
 run "$tmp/slab.obj" --remesh-surfaces --size 25% --no-sliver-removal --threads 2
 n2="$(slab_triangles)"
 check "thin slab: the note names the thickness rule's sizes" contains "$out" "note: thin layers or fault tips (thickness down to 0.1) make edges as short as 0.05 there, under the target size"
-check "thin slab: ... and --layer-elements" contains "$out" "--layer-elements (now 2)"
-echo "  slab re-meshed triangles with 0 / 1 / 2 (default) edges across: $n0 / $n1 / $n2"
+check "thin slab: ... and --layer-elements" contains "$out" "--layer-elements (now 1.63)"
+echo "  slab re-meshed triangles with 0 / 1 / 1.63 (default) edges across: $n0 / $n1 / $n2"
 check "--layer-elements: finer with more edges across a thin layer" \
   test -n "$n0" -a -n "$n1" -a -n "$n2" -a "${n0:-0}" -lt "${n1:-0}" -a "${n1:-0}" -lt "${n2:-0}"
 run "$tmp/slab.obj" --layer-elements 1
@@ -425,16 +425,17 @@ echo "  slab and box re-meshed triangles with size grading 1.5 (default) / 1.2: 
 check "--size-grading: more triangles with a slower grading" \
   test -n "$g15" -a -n "$g12" -a "${g15:-0}" -lt "${g12:-0}"
 # --interior-grading: in the box beside the fine slab the bubbles grow away from
-# it at most by the ratio given between touching ones: more of them with 1.25
-# than by default, the same as the default with 3 given
+# it at most by the ratio given between touching ones: fewer of them with 3 (the
+# default with the surfaces kept) than by default re-meshed, the same as the
+# default with 1.25 given
 run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --interior-grading 1.25 --no-sliver-removal --threads 2
 b125="$(grading_bubbles)"
 run "$tmp/slab_box.obj" --remesh-surfaces --size 25% --interior-grading 3 --no-sliver-removal --threads 2
 b3="$(grading_bubbles)"
-echo "  slab and box bubbles with interior grading 3 (default) / 1.25 / 3 given: $b_default / $b125 / $b3"
-check "--interior-grading: more bubbles with 1.25 than by default" \
-  test -n "$b_default" -a -n "$b125" -a "${b_default:-0}" -lt "${b125:-0}"
-check "--interior-grading 3 is the default" test -n "$b3" -a "${b3:-x}" = "${b_default:-y}"
+echo "  slab and box bubbles with interior grading 1.25 (default re-meshed) / 3 / 1.25 given: $b_default / $b3 / $b125"
+check "--interior-grading: fewer bubbles with 3 than by default re-meshed" \
+  test -n "$b_default" -a -n "$b3" -a "${b3:-0}" -lt "${b_default:-0}"
+check "--interior-grading 1.25 is the default re-meshed" test -n "$b125" -a "${b125:-x}" = "${b_default:-y}"
 run "$tmp/slab_box.obj" --interior-grading 1
 check "--interior-grading 1 exits 2" test "$rc" -eq 2
 check "--interior-grading 1 says what it takes" contains "$err" "ratio above 1"

@@ -290,7 +290,9 @@ void test_sizing()
   std::cout << "sizing field\n";
   const Model m = test_model();
   const BM::Model_features f = BM::detect_model_features(m);
-  const BM::Remeshing_sizing_field<K> field(m, f, BM::parameters::edge_length(1.));
+  // (two edges across given: the figures below follow from it, not from the default)
+  const BM::Remeshing_sizing_field<K> field(
+    m, f, BM::parameters::elements_across_thickness(2., BM::parameters::edge_length(1.)));
   // the thin layer (0.3 thick) wants 0.15 with two elements across; far from it the user size
   const double on_h1 = field(Point(5, 4, 1.5), 1);
   const double on_roof = field(Point(1, 1, 4), 3);
@@ -314,7 +316,8 @@ void test_sizing()
   }
   // factors: region 3 (top) twice as fine
   const BM::Remeshing_sizing_field<K> finer(
-    m, f, BM::parameters::region_size_factors(std::vector<double>{1., 1., 1., 0.5}, BM::parameters::edge_length(1.)));
+    m, f, BM::parameters::region_size_factors(std::vector<double>{1., 1., 1., 0.5},
+                                              BM::parameters::elements_across_thickness(2., BM::parameters::edge_length(1.))));
   // (away from the fault tip, where the thickness rule does not apply)
   std::cout << "  top region factor 0.5: size on the roof " << finer(Point(1, 1, 4), 3) << "\n";
   assert(std::abs(finer(Point(1, 1, 4), 3) - 0.5) < 1e-12);
@@ -538,7 +541,9 @@ void test_in_memory(BM::Surface_remeshing_method method)
   std::cout << "remesh_surfaces on the in-memory model, " << (bubbles ? "bubbles" : "isotropic") << "\n";
   const Model input = test_model();
   Model output;
-  const auto np = BM::parameters::surface_remeshing_method(method, BM::parameters::edge_length(1.));
+  // (two edges across thin layers given, as the thin layer's edge lengths are checked against it)
+  const auto np = BM::parameters::surface_remeshing_method(
+    method, BM::parameters::elements_across_thickness(2., BM::parameters::edge_length(1.)));
   const BM::Model_features f = BM::detect_model_features(input);
   BM::Remeshing_sizing_field<K> field(input, f, np);
   const BM::Remeshing_sizing_field<K> given = field;

@@ -99,8 +99,11 @@ public:
   typedef typename GeomTraits::Point_3 Point_3;     ///< point type
   typedef typename GeomTraits::Vector_3 Vector_3;   ///< vector type
 
-  /// default of the named parameter `elements_across_thickness`
-  static constexpr double default_elements_across_thickness = 2.;
+  /// default of the named parameter `elements_across_thickness`: the bubbles
+  /// then fill a thin layer with two tetrahedra across (about 1.22 per edge);
+  /// 2 gave three there, and more of the long thin tetrahedra beside them
+  /// (bench/README.md, session 56)
+  static constexpr double default_elements_across_thickness = 1.63;
   /// default of the named parameter `size_grading`
   static constexpr double default_size_grading = 1.5;
   /// default of the named parameter `curvature_angle`: 16 edges around a circle
@@ -138,7 +141,7 @@ public:
     \cgalParamNBegin{elements_across_thickness}
       \cgalParamDescription{edges wanted across the local thickness; 0 turns the rule off}
       \cgalParamType{`double`}
-      \cgalParamDefault{2}
+      \cgalParamDefault{`default_elements_across_thickness` (1.63)}
     \cgalParamNEnd
     \cgalParamNBegin{minimum_edge_length}
       \cgalParamDescription{floor of the thickness rule, in model units (positive)}
@@ -807,7 +810,7 @@ private:
   }
 
   double diagonal_ = 0., user_size_ = 0., max_patch_size_ = 0.;
-  double elements_across_ = 2., minimum_size_ = 0., grading_ = 1.5, slope_ = 0.5;
+  double elements_across_ = default_elements_across_thickness, minimum_size_ = 0., grading_ = 1.5, slope_ = 0.5;
   bool refine_ribbons_ = false;
   double min_source_ = std::numeric_limits<double>::infinity();
   double smallest_thickness_ = std::numeric_limits<double>::infinity();

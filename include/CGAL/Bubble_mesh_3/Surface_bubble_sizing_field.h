@@ -104,6 +104,9 @@ public:
 
   /// `size_gradation` unless given: touching bubbles' radii within a ratio of 3
   static constexpr double default_size_gradation = 0.5;
+  /// `size_gradation` that `make_bubble_mesh_3()` gives re-meshed surfaces unless
+  /// told otherwise: a ratio of 1.25 (bench/README.md, session 56)
+  static constexpr double default_remeshed_size_gradation = 1. / 9.;
 
 private:
   typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
@@ -145,7 +148,8 @@ public:
     \cgalParamNBegin{size_gradation}
       \cgalParamDescription{`g`: the radius grows at most `g` per unit of distance from a surface bubble; 0: no bound}
       \cgalParamType{double}
-      \cgalParamDefault{`default_size_gradation` (0.5)}
+      \cgalParamDefault{`default_size_gradation` (0.5); `make_bubble_mesh_3()` passes
+        `default_remeshed_size_gradation` (1/9) when it re-meshed the surfaces}
     \cgalParamNEnd
     \cgalParamNBegin{area_weighted_radius_floor}
       \cgalParamDescription{R0 at least half of the quantiles' value weighted by area (see above); for surfaces
