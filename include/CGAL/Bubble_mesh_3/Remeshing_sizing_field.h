@@ -99,10 +99,10 @@ public:
   typedef typename GeomTraits::Point_3 Point_3;     ///< point type
   typedef typename GeomTraits::Vector_3 Vector_3;   ///< vector type
 
-  /// default of the named parameter `elements_across_thickness`: the bubbles
-  /// then fill a thin layer with two tetrahedra across (about 1.22 per edge);
-  /// 2 gave three there, and more of the long thin tetrahedra beside them
-  /// (bench/README.md, session 56)
+  /// default of the named parameter `elements_across_thickness`: about two
+  /// tetrahedra across a thin layer (one layer of bubbles between its faces),
+  /// as with 2 (until session 55), but fewer of them: the bundled model's thin
+  /// layer gets 30,945 tetrahedra instead of 49,956 (bench/README.md, session 56)
   static constexpr double default_elements_across_thickness = 1.63;
   /// default of the named parameter `size_grading`
   static constexpr double default_size_grading = 1.5;
