@@ -354,7 +354,8 @@ void test_proximity_inside_search_ball()
   b.rectangle(fault, Point(5, 2, 1), Point(5, 6, 1), Point(5, 6, 2), Point(5, 2, 2), Vector(1, 0, 0));
   const Model& m = b.model;
   const BM::Model_features f = BM::detect_model_features(m);
-  const BM::Remeshing_sizing_field<K> field(m, f, BM::parameters::edge_length(1.));
+  const BM::Remeshing_sizing_field<K> field(
+    m, f, BM::parameters::elements_across_thickness(2., BM::parameters::edge_length(1.)));
   const double at_tip = field(Point(5, 4, 2), fault);
   std::cout << "  size on the fault tip under the lens " << at_tip << " (0.5 away: 0.25 wanted)\n";
   assert(std::abs(at_tip - 0.25) < 1e-9);
