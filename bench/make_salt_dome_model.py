@@ -23,7 +23,7 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "test", "Bubble_mesh_3"))
-from make_pinch_out_model import write_bodies_and_free_surfaces  # noqa: E402
+from make_pinch_out_model import write_closed_bodies  # noqa: E402
 
 CENTRE, RADIUS = (450., 400., 120.), 180.
 
@@ -75,13 +75,7 @@ def main():
     def body_name(x, z, volume):
         del volume
         return names[(x, z)]
-
-    def no_free_surface(free):
-        if free:
-            raise SystemExit("make_salt_dome_model: %d surfaces bound no body" % len(free))
-        return []
-    write_bodies_and_free_surfaces(a.out, "make_salt_dome_model.py --edge %g --height %g" % (a.edge, a.height),
-                                   body_name, no_free_surface)
+    write_closed_bodies(a.out, "make_salt_dome_model.py --edge %g --height %g" % (a.edge, a.height), body_name)
     gmsh.finalize()
 
 

@@ -20,7 +20,7 @@ import sys
 import gmsh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "test", "Bubble_mesh_3"))
-from make_pinch_out_model import write_bodies_and_free_surfaces  # noqa: E402
+from make_pinch_out_model import write_closed_bodies  # noqa: E402
 
 
 def main():
@@ -45,13 +45,7 @@ def main():
     def body_name(x, z, volume):
         del x, volume
         return "lower" if z < 300. else "layer" if z < 300. + a.thickness else "upper"
-
-    def no_free_surface(free):
-        if free:
-            raise SystemExit("make_thin_layer_model: %d surfaces bound no body" % len(free))
-        return []
-    write_bodies_and_free_surfaces(a.out, "make_thin_layer_model.py --edge %g --thickness %g" % (a.edge, a.thickness),
-                                   body_name, no_free_surface)
+    write_closed_bodies(a.out, "make_thin_layer_model.py --edge %g --thickness %g" % (a.edge, a.thickness), body_name)
     gmsh.finalize()
 
 

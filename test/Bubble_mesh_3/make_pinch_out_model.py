@@ -104,6 +104,16 @@ def write_multibody_obj(path, made_by, body_name, free_name, free_inside):
     write_bodies_and_free_surfaces(path, made_by, body_name, one)
 
 
+def write_closed_bodies(path, made_by, body_name):
+    """write_bodies_and_free_surfaces() for a model whose every surface bounds a
+    volume (no fault ends inside a body)."""
+    def none(free):
+        if free:
+            raise SystemExit("%s: %d surfaces bound no body" % (made_by.split()[0], len(free)))
+        return []
+    write_bodies_and_free_surfaces(path, made_by, body_name, none)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out")
