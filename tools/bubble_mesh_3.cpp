@@ -543,8 +543,9 @@ std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, con
 // at size h (re-meshed, the re-meshing size; kept, the region's median edge; times
 // its --region-size-factor) (regular ones of edge h fill it; a uniform packing gives
 // about as many), several times more where thin layers and small features make
-// the sizes smaller (14-16 times at the default size of the bundled model and
-// modelA2), about 0.5 KB each at the peak. A size far too small for the model (a
+// the sizes smaller (12 times on the bundled model re-meshed at the default size;
+// 14-16 on it and modelA2 with the defaults before session 56), about 0.5 KB each
+// at the peak. A size far too small for the model (a
 // typo, a size in the wrong unit) would run for hours and then be killed:
 // refuse when even the bound does not fit in the machine's memory, warn when a
 // quarter of it does not.

@@ -76,11 +76,12 @@ huge bubbles at the corners of coarse triangles (a box's faces) would
 otherwise be interpolated over the whole fine mesh beside them. Two touching
 bubbles the bound holds have radii within a ratio `(1 + g) / (1 - g)`: 3 at
 0.5. A gentler bound grades a body beside a finer one more slowly, with more
-bubbles: on re-meshed surfaces `g = 1/9` (a ratio of 1.25) takes the bundled
-model's aspect-ratio median from 1.85 to 1.79 with 22 % more tetrahedra, but
-CloudSpin's from 1.64 to 1.66 with 23 % more: where the inside cannot grow as
+bubbles: `make_bubble_mesh_3()` passes `g = 1/9` (a ratio of 1.25) on re-meshed
+surfaces, which with 1.63 edges across thin layers takes the bundled model's
+aspect-ratio median from 1.85 to 1.78 with 22 % fewer tetrahedra, but
+CloudSpin's from 1.64 to 1.66 with 21 % more: where the inside cannot grow as
 fast as the surfaces do, the jump moves to the coarse surfaces (bench/README.md,
-session 52). It and the quantiles are deviations from the paper, measured on
+sessions 52 and 56). It and the quantiles are deviations from the paper, measured on
 modelA1 (bench/README.md).
 
 Only surface bubbles whose `surface_point` is a model point are used. Weight
