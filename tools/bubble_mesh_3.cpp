@@ -244,7 +244,7 @@ struct Options
   double size_grading = BM::Remeshing_sizing_field<K>::default_size_grading;
   bool size_grading_given = false;
   // Surface_bubble_sizing_field's size_gradation g, given as the ratio (1 + g) / (1 - g)
-  // (0: not given, the field's default_size_gradation)
+  // (0: not given, the field's default_size_gradation_for() the run)
   double interior_grading = 0.;
   // Remeshing_sizing_field's curvature_angle
   double curvature_angle = BM::Remeshing_sizing_field<K>::default_curvature_angle;
@@ -729,11 +729,9 @@ int main(int argc, char** argv)
     stage_timer.start();
     // the ratio G between touching bubbles is the field's g = (G - 1) / (G + 1)
     // (unless given, the library's default for the run: gentler on re-meshed surfaces)
-    typedef BM::Surface_bubble_sizing_field<K> Sizing;
-    const double interior_gradation = opt.interior_grading > 0.
-                                        ? (opt.interior_grading - 1.) / (opt.interior_grading + 1.)
-                                        : opt.remesh_surfaces ? Sizing::default_remeshed_size_gradation
-                                                              : Sizing::default_size_gradation;
+    const double interior_gradation =
+      opt.interior_grading > 0. ? (opt.interior_grading - 1.) / (opt.interior_grading + 1.)
+                                : BM::Surface_bubble_sizing_field<K>::default_size_gradation_for(opt.remesh_surfaces);
     const auto np = BM::parameters::stage_callback(progress,
                     BM::parameters::bubble_mesh_report(&report,
                     BM::parameters::perturb_interior_vertices(opt.sliver_removal,

@@ -214,10 +214,9 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
     timed("surface bubbles", report->time_surface_bubbles, [&] {
       surface_bubbles = place_surface_bubbles(meshed, np);
       // re-meshed surfaces have no huge triangles: R0 may then look at the area the sizes cover
-      typedef Surface_bubble_sizing_field<GeomTraits> Sizing;
-      const double gradation = choose_parameter(get_parameter(np, internal_np::size_gradation),
-                                                report->surfaces_remeshed ? Sizing::default_remeshed_size_gradation
-                                                                          : Sizing::default_size_gradation);
+      const double gradation =
+        choose_parameter(get_parameter(np, internal_np::size_gradation),
+                         Surface_bubble_sizing_field<GeomTraits>::default_size_gradation_for(report->surfaces_remeshed));
       sizing.emplace(meshed, surface_bubbles,
                      parameters::area_weighted_radius_floor(
                        choose_parameter(get_parameter(np, internal_np::area_weighted_radius_floor),

@@ -108,6 +108,12 @@ public:
   /// `size_gradation` that `make_bubble_mesh_3()` gives re-meshed surfaces unless
   /// told otherwise: a ratio of 1.25 (bench/README.md, session 56)
   static constexpr double default_remeshed_size_gradation = 1. / 9.;
+  /// the `size_gradation` a run takes unless given: the one for surfaces
+  /// `remesh_surfaces()` made, or the one for the input's own
+  static constexpr double default_size_gradation_for(bool surfaces_remeshed)
+  {
+    return surfaces_remeshed ? default_remeshed_size_gradation : default_size_gradation;
+  }
 
 private:
   typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
