@@ -8,11 +8,12 @@
 // new triangles to the input gives, curve Hausdorff distance, validity of
 // the output (conforming, closed oriented regions, no crossing) and time.
 //
-// Usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] MODEL [MODEL ...]
+// Usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--no-volume-balance] MODEL [MODEL ...]
 //   (default: the bundled model and every ../shared/data/geomodels model of issue 9)
 //   --details  also lists the triangles under 25 degrees that no input corner forces,
 //              and the validation problems of an invalid output
 //   --refine-ribbons  the sizing field's ribbon rule (refine_ribbons(true))
+//   --no-volume-balance  leave the region volumes as the chords make them (keep_region_volumes(false))
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
@@ -110,7 +111,7 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
 
 int main(int argc, char** argv)
 {
-  bool show_details = false, ribbons = false;
+  bool show_details = false, ribbons = false, balance = true;
   double size = 0.;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
@@ -119,9 +120,10 @@ int main(int argc, char** argv)
     if(a == "--details") show_details = true;
     else if(a == "--size" && i + 1 < argc) size = std::atof(argv[++i]);
     else if(a == "--refine-ribbons") ribbons = true;
+    else if(a == "--no-volume-balance") balance = false;
     else if(a == "--help" || a == "-h")
     {
-      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [MODEL ...]\n";
+      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--no-volume-balance] [MODEL ...]\n";
       return EXIT_SUCCESS;
     }
     else files.push_back(a);
@@ -166,9 +168,11 @@ int main(int argc, char** argv)
     const BM::Surface_remeshing_report r =
       size > 0. ? BM::remesh_surfaces(input, output,
                                       BM::parameters::sizing_field_output(field.get(), BM::parameters::edge_length(size,
-                                                                          BM::parameters::refine_ribbons(ribbons))))
+                                                                          BM::parameters::refine_ribbons(ribbons,
+                                                                          BM::parameters::keep_region_volumes(balance)))))
                 : BM::remesh_surfaces(input, output,
-                                      BM::parameters::sizing_field_output(field.get(), BM::parameters::refine_ribbons(ribbons)));
+                                      BM::parameters::sizing_field_output(field.get(), BM::parameters::refine_ribbons(ribbons,
+                                                                          BM::parameters::keep_region_volumes(balance))));
     const std::vector<std::string> problems = BM::geological_model_problems(output);
     const std::vector<double> bound = volume_change_bounds(input, output);
     // the worst region against its bound
@@ -191,7 +195,11 @@ int main(int argc, char** argv)
       std::cout << "    diagonal " << diagonal(input) << ", " << r.number_of_charts << " charts ("
                 << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points
                 << " (" << r.number_of_staggered_curve_pieces << " curve pieces staggered across strips), "
-                << r.number_of_collapsed_points << " crowded points collapsed\n";
+                << r.number_of_collapsed_points << " crowded points collapsed\n"
+                << "    volume error before balancing " << r.volume_error_before_balancing << ", "
+                << r.number_of_volume_balancing_steps << " steps, " << r.number_of_volume_balancing_points
+                << " points moved, farthest " << r.largest_volume_balancing_move << " sizes, "
+                << r.number_of_regions_not_balanced << " regions left out, " << r.time_volume_balance << " s\n";
       for(const std::string& p : problems) std::cout << "    problem: " << p << "\n";
       details(output, r, *field);
     }

@@ -163,6 +163,11 @@ const char* usage_text =
 "                             by its width instead of spanning it with needles. Better\n"
 "                             elements there, many more of them (modelA5: tetrahedra\n"
 "                             under 10 degrees 395 -> 221, run time 241 -> 564 s)\n"
+"  --no-volume-balance        with --remesh-surfaces: leave each region's volume as the\n"
+"                             new triangles make it (chords across the bends of curved\n"
+"                             surfaces: about 1e-4 of it on real horizons, percents on a\n"
+"                             coarse tunnel). By default the new points slide along the\n"
+"                             input surfaces until every region has its input volume\n"
 "  --population-rounds N      most rounds of population control (bubbles deleted where\n"
 "                             crowded, inserted in gaps), each followed by a relaxation\n"
 "                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
@@ -250,6 +255,7 @@ struct Options
   double curvature_angle = BM::Remeshing_sizing_field<K>::default_curvature_angle;
   bool curvature_angle_given = false;
   bool refine_ribbons = false;
+  bool balance_volumes = true;
   // --region-size-factor and --surface-size-factor as given: name or number, factor
   std::vector<std::pair<std::string, double> > region_size_factors;
   std::vector<std::pair<std::string, double> > surface_size_factors;
@@ -362,6 +368,7 @@ Options parse_options(int argc, char** argv)
       o.layer_elements_given = true;
     }
     else if(a == "--refine-ribbons") o.refine_ribbons = true;
+    else if(a == "--no-volume-balance") o.balance_volumes = false;
     else if(a == "--region-size-factor") o.region_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--surface-size-factor") o.surface_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--population-rounds") o.population_rounds = parse_count(a, value(a), "rounds", 1000.);
@@ -413,6 +420,9 @@ Options parse_options(int argc, char** argv)
     usage_error("--curvature-angle is a rule of --remesh-surfaces: give both");
   if(o.refine_ribbons && !o.remesh_surfaces)
     usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
+  if(!o.balance_volumes && !o.remesh_surfaces)
+    usage_error("--no-volume-balance is a rule of --remesh-surfaces (without it the surfaces and volumes are kept "
+                "exactly): give both");
   if(!o.surface_size_factors.empty() && !o.remesh_surfaces)
     usage_error("--surface-size-factor sizes the re-meshed surfaces: give --remesh-surfaces too (without it the "
                 "input surfaces are kept as they are)");
@@ -748,6 +758,7 @@ int main(int argc, char** argv)
                     BM::parameters::size_gradation(interior_gradation,
                     BM::parameters::curvature_angle(opt.curvature_angle,
                     BM::parameters::refine_ribbons(opt.refine_ribbons,
+                    BM::parameters::keep_region_volumes(opt.balance_volumes,
                     // re-meshed, a region's factor sizes its surfaces and its inside follows
                     // them; kept, it scales the bubbles inside it only
                     BM::parameters::region_size_factors(opt.remesh_surfaces ? region_factors : std::vector<double>(),
@@ -758,7 +769,7 @@ int main(int argc, char** argv)
                     BM::parameters::solid_angle_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::wall_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::inertial_relaxation(!opt.paper_dynamics,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));
@@ -811,8 +822,14 @@ int main(int argc, char** argv)
                 << rr.number_of_small_angle_triangles_between_curve_points << " between three curve points), edges within "
                 << "[0.5, 1.5] of the target " << 100. * rr.input_share_of_edges_within_size
                 << " -> " << 100. * rr.share_of_edges_within_size << " %, largest region volume change "
-                << rr.max_relative_volume_error << ", curve distance " << rr.max_curve_distance
-                << " of the diagonal\n" << std::defaultfloat;
+                << rr.max_relative_volume_error;
+    if(report.surfaces_remeshed && rr.number_of_volume_balancing_steps > 0)
+      std::cout << " (" << rr.volume_error_before_balancing << " before " << rr.number_of_volume_balancing_points
+                << " points slid along the input surfaces)";
+    if(report.surfaces_remeshed && rr.number_of_regions_not_balanced > 0 && opt.balance_volumes)
+      std::cout << " (" << rr.number_of_regions_not_balanced << " regions left out of the volume balance)";
+    if(report.surfaces_remeshed)
+      std::cout << ", curve distance " << rr.max_curve_distance << " of the diagonal\n" << std::defaultfloat;
     // a user who asked for a size should know where the mesh is finer, and why
     if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size < rr.target_size)
       std::cout << std::setprecision(4) << "note: thin layers or fault tips (thickness down to "
@@ -823,7 +840,8 @@ int main(int argc, char** argv)
                    "with 0 the rule is off\n"
                 << std::defaultfloat;
     // new triangles are chords across the input's creases: on a curved, coarsely
-    // faceted surface (a tunnel of 16 facets) that changes a region's volume by percents
+    // faceted surface (a tunnel of 16 facets) that changes a region's volume by
+    // percents, unless the balance gave it back
     if(report.surfaces_remeshed)
     {
       std::vector<std::pair<double, std::size_t> > changed;
@@ -845,9 +863,14 @@ int main(int argc, char** argv)
                     << model.region(changed[i].second).name << "' by " << std::showpos << 100. * changed[i].first
                     << std::noshowpos << " %";
         if(changed.size() > 3) std::cout << " and " << changed.size() - 3 << " more";
-        std::cout << ": the new triangles cut across the bends of curved surfaces; a smaller --size "
-                     "shrinks the change about in proportion, and without --remesh-surfaces the surfaces "
-                     "and volumes are kept exactly\n";
+        if(opt.balance_volumes)
+          std::cout << ": the new triangles cut across bends that all turn one way there (a convex body faceted "
+                       "coarsely, or the rock around one), so sliding the new points along the input surfaces cannot "
+                       "give it back; a smaller --curvature-angle or --size shrinks the change, and without "
+                       "--remesh-surfaces the surfaces and volumes are kept exactly\n";
+        else
+          std::cout << ": the new triangles cut across the bends of curved surfaces; without --no-volume-balance "
+                       "the new points slide along the input surfaces until every region has its volume back\n";
         std::cout.precision(precision);
       }
     }

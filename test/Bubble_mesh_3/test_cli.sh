@@ -165,6 +165,9 @@ PY
       --quality-json "$tmp/tunnel_remeshed_q.json" --layer-elements 2
   check "fault-and-tunnel model re-meshed exits 0" test "$rc" -eq 0
   check "re-meshed: the note names the tunnel whose volume changed" contains "$out" "note: re-meshing changed the volume of region 6 'tunnel_bottom' by -"
+  # every new triangle cuts into the tunnel: slides along its facets cannot give the volume back
+  check "re-meshed: the tunnel and the rock around it are left out of the volume balance" \
+    contains "$out" "(4 regions left out of the volume balance)"
   # a region and a surface asked finer: more tetrahedra in the region (4.6 times with population
   # control, 2.3 without), more triangles on foot_2's outer walls (4.0 times; a surface whose
   # sizes the thin-layer rule sets, as the small fault's, gains only where the target binds)
@@ -455,6 +458,10 @@ run "$tmp/slab_box.obj" --refine-ribbons
 check "--refine-ribbons without --remesh-surfaces exits 2" test "$rc" -eq 2
 check "--refine-ribbons without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
 check "--help lists --refine-ribbons" bash -c "'$exe' --help | grep -q -- --refine-ribbons"
+run "$tmp/slab_box.obj" --no-volume-balance
+check "--no-volume-balance without --remesh-surfaces exits 2" test "$rc" -eq 2
+check "--no-volume-balance without --remesh-surfaces says so" contains "$err" "--no-volume-balance is a rule of --remesh-surfaces"
+check "--help lists --no-volume-balance" bash -c "'$exe' --help | grep -q -- --no-volume-balance"
 
 # --population-rounds: with 0 no pass thins the initial bubbles (placed about 8 times
 # too dense), so the bundled model keeps more of them than with population control

@@ -1,0 +1,1 @@
+modelA1.ml
