@@ -210,6 +210,26 @@ PY
   run "$tmp/tunnel.obj" --curvature-angle 11.25
   check "--curvature-angle without --remesh-surfaces exits 2" test "$rc" -eq 2
   check "--curvature-angle without --remesh-surfaces says so" contains "$err" "--curvature-angle is a rule of --remesh-surfaces"
+  # a folded horizon (an anticline) re-meshed coarse: its chords change the two bodies' volumes
+  # (4.7e-4 here) until the new points slide along it, and the tetrahedra have each body's input volume
+  /usr/bin/python3 "$root/bench/make_crossing_faults_model.py" "$tmp/fold.obj" --edge 80 >/dev/null
+  run "$tmp/fold.obj" --check --summary-json "$tmp/fold_summary.json"
+  run "$tmp/fold.obj" --remesh-surfaces --size 8% --layer-elements 0 --population-rounds 0 --threads 2 \
+      -o "$tmp/fold.mesh" --quality-json "$tmp/fold_q.json"
+  check "folded model re-meshed exits 0" test "$rc" -eq 0
+  check "folded model re-meshed: the chords changed a volume by over 1e-5, and points slid" /usr/bin/python3 - "$out" <<'PY'
+import re, sys
+m = re.search(r"largest region volume change (\S+) \((\S+) before (\d+) points slid along the input surfaces\)", sys.argv[1])
+print("  folded model: volume change %s after, %s before %s points slid" % m.groups())
+sys.exit(0 if float(m.group(2)) > 1e-5 and float(m.group(1)) < 1e-9 and int(m.group(3)) > 0 else 1)
+PY
+  check "folded model re-meshed: each region meshed with its input volume (1e-9)" \
+    /usr/bin/python3 - "$tmp/fold_summary.json" "$tmp/fold_q.json" <<'PY'
+import json, sys
+model = {r["name"]: r["volume"] for r in json.load(open(sys.argv[1]))["regions"]}
+mesh = {r["name"]: r["volume"] for r in json.load(open(sys.argv[2]))["regions"]}
+sys.exit(0 if set(model) == set(mesh) and all(abs(mesh[n] - v) <= 1e-9 * v for n, v in model.items()) else 1)
+PY
 else
   echo "SKIP: python3-gmsh is not installed (scripts/install_deps.sh --tests installs it)"
 fi
