@@ -8,12 +8,12 @@
 // new triangles to the input gives, curve Hausdorff distance, validity of
 // the output (conforming, closed oriented regions, no crossing) and time.
 //
-// Usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--no-volume-balance] MODEL [MODEL ...]
+// Usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--balance-volumes] MODEL [MODEL ...]
 //   (default: the bundled model and every ../shared/data/geomodels model of issue 9)
 //   --details  also lists the triangles under 25 degrees that no input corner forces,
 //              and the validation problems of an invalid output
 //   --refine-ribbons  the sizing field's ribbon rule (refine_ribbons(true))
-//   --no-volume-balance  leave the region volumes as the chords make them (keep_region_volumes(false))
+//   --balance-volumes  slide the free points until every region has its input volume (keep_region_volumes(true))
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
@@ -111,7 +111,7 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
 
 int main(int argc, char** argv)
 {
-  bool show_details = false, ribbons = false, balance = true;
+  bool show_details = false, ribbons = false, balance = false;
   double size = 0.;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
@@ -120,10 +120,10 @@ int main(int argc, char** argv)
     if(a == "--details") show_details = true;
     else if(a == "--size" && i + 1 < argc) size = std::atof(argv[++i]);
     else if(a == "--refine-ribbons") ribbons = true;
-    else if(a == "--no-volume-balance") balance = false;
+    else if(a == "--balance-volumes") balance = true;
     else if(a == "--help" || a == "-h")
     {
-      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--no-volume-balance] [MODEL ...]\n";
+      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--balance-volumes] [MODEL ...]\n";
       return EXIT_SUCCESS;
     }
     else files.push_back(a);

@@ -163,11 +163,12 @@ const char* usage_text =
 "                             by its width instead of spanning it with needles. Better\n"
 "                             elements there, many more of them (modelA5: tetrahedra\n"
 "                             under 10 degrees 395 -> 221, run time 241 -> 564 s)\n"
-"  --no-volume-balance        with --remesh-surfaces: leave each region's volume as the\n"
-"                             new triangles make it (chords across the bends of curved\n"
-"                             surfaces: about 1e-4 of it on real horizons, percents on a\n"
-"                             coarse tunnel). By default the new points slide along the\n"
-"                             input surfaces until every region has its input volume\n"
+"  --balance-volumes          with --remesh-surfaces: slide the new points along the input\n"
+"                             surfaces until every region has its input volume again (the\n"
+"                             new triangles are chords across the bends of curved surfaces:\n"
+"                             without it a region's volume changes by about 1e-4 on real\n"
+"                             horizons). A convex body faceted coarsely (a tunnel) cannot\n"
+"                             be balanced so, and is left as it is\n"
 "  --population-rounds N      most rounds of population control (bubbles deleted where\n"
 "                             crowded, inserted in gaps), each followed by a relaxation\n"
 "                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
@@ -255,7 +256,7 @@ struct Options
   double curvature_angle = BM::Remeshing_sizing_field<K>::default_curvature_angle;
   bool curvature_angle_given = false;
   bool refine_ribbons = false;
-  bool balance_volumes = true;
+  bool balance_volumes = false;
   // --region-size-factor and --surface-size-factor as given: name or number, factor
   std::vector<std::pair<std::string, double> > region_size_factors;
   std::vector<std::pair<std::string, double> > surface_size_factors;
@@ -368,7 +369,7 @@ Options parse_options(int argc, char** argv)
       o.layer_elements_given = true;
     }
     else if(a == "--refine-ribbons") o.refine_ribbons = true;
-    else if(a == "--no-volume-balance") o.balance_volumes = false;
+    else if(a == "--balance-volumes") o.balance_volumes = true;
     else if(a == "--region-size-factor") o.region_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--surface-size-factor") o.surface_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--population-rounds") o.population_rounds = parse_count(a, value(a), "rounds", 1000.);
@@ -420,8 +421,8 @@ Options parse_options(int argc, char** argv)
     usage_error("--curvature-angle is a rule of --remesh-surfaces: give both");
   if(o.refine_ribbons && !o.remesh_surfaces)
     usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
-  if(!o.balance_volumes && !o.remesh_surfaces)
-    usage_error("--no-volume-balance is a rule of --remesh-surfaces (without it the surfaces and volumes are kept "
+  if(o.balance_volumes && !o.remesh_surfaces)
+    usage_error("--balance-volumes is a rule of --remesh-surfaces (without it the surfaces and volumes are kept "
                 "exactly): give both");
   if(!o.surface_size_factors.empty() && !o.remesh_surfaces)
     usage_error("--surface-size-factor sizes the re-meshed surfaces: give --remesh-surfaces too (without it the "
@@ -869,8 +870,10 @@ int main(int argc, char** argv)
                        "give it back; a smaller --curvature-angle or --size shrinks the change, and without "
                        "--remesh-surfaces the surfaces and volumes are kept exactly\n";
         else
-          std::cout << ": the new triangles cut across the bends of curved surfaces; without --no-volume-balance "
-                       "the new points slide along the input surfaces until every region has its volume back\n";
+          std::cout << ": the new triangles cut across the bends of curved surfaces; with --balance-volumes the "
+                       "new points slide along the input surfaces until every region has its volume back, unless "
+                       "the bends all turn one way (a convex body faceted coarsely); a smaller --curvature-angle "
+                       "shrinks the change\n";
         std::cout.precision(precision);
       }
     }

@@ -628,7 +628,8 @@ void test_overhang()
   const auto np = BM::parameters::edge_length(0.5);
   BM::Remeshing_sizing_field<K> field(input, f, np);
   const BM::Remeshing_sizing_field<K> given = field;
-  const BM::Surface_remeshing_report r = BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field, np));
+  const BM::Surface_remeshing_report r = BM::remesh_surfaces(
+    input, output, BM::parameters::sizing_field_output(&field, BM::parameters::keep_region_volumes(true, np)));
   print("overhang", r);
   assert(r.number_of_chart_cuts > 0);
   // The strip f is a lens narrower than the size, with 24-degree tips:
@@ -639,10 +640,9 @@ void test_overhang()
   check_remeshed(input, output, r, field, given, false, true);
   assert(r.number_of_volume_balancing_steps > 0 && r.number_of_volume_balancing_points > 0);
 
-  // without the balance: the chords' error, which the balance started from
+  // without the balance (the default): the chords' error, which the balance started from
   Model unbalanced;
-  const BM::Surface_remeshing_report u =
-    BM::remesh_surfaces(input, unbalanced, BM::parameters::keep_region_volumes(false, np));
+  const BM::Surface_remeshing_report u = BM::remesh_surfaces(input, unbalanced, np);
   std::cout << "  without the balance: largest relative volume error " << u.max_relative_volume_error << "\n";
   assert(u.max_relative_volume_error > 1e-6 && u.max_relative_volume_error < 1e-3);
   assert(u.number_of_volume_balancing_steps == 0 && u.volume_error_before_balancing == 0.);
@@ -854,10 +854,11 @@ void test_real_models(const std::vector<std::string>& names)
     const BM::Model_features f = BM::detect_model_features(input);
     BM::Remeshing_sizing_field<K> field(input, f, np);
     const BM::Remeshing_sizing_field<K> given = field;
-    const BM::Surface_remeshing_report r = BM::remesh_surfaces(input, output, BM::parameters::sizing_field_output(&field, np));
+    const BM::Surface_remeshing_report r = BM::remesh_surfaces(
+      input, output, BM::parameters::sizing_field_output(&field, BM::parameters::keep_region_volumes(true, np)));
     print(name, r);
-    // the chords across curved horizons change the volumes by about 1e-4; the
-    // free points' slide along the input gives them back
+    // the chords across curved horizons change the volumes by about 1e-4; with
+    // keep_region_volumes the free points' slide along the input gives them back
     std::cout << "    before the balance " << r.volume_error_before_balancing << " (" << r.number_of_volume_balancing_points
               << " points moved)\n";
     check_remeshed(input, output, r, field, given, true, true);

@@ -159,7 +159,7 @@ public:
     double angle_bound = 25.;
     std::size_t relaxation_steps = 40;
     std::size_t population_rounds = 3;
-    bool keep_region_volumes = true;
+    bool keep_region_volumes = false;
     bool verbose = false;
     bool parallel = false; // charts triangulated on several threads
   };
@@ -1141,13 +1141,15 @@ Every new point lies on the input patch (it is a point of an input
 triangle of the same patch, up to rounding). On a curved input patch a new
 triangle is a chord across the input's creases, which changes the volumes
 of the regions on either side (by 1e-4 to 6e-4 on the models of the test
-data). With `keep_region_volumes` (the default) the free points then slide
+data). With `keep_region_volumes(true)` the free points then slide
 along their input triangles until every region has its input volume again
 (Newton steps on the region volumes, each the smallest move of the free
 points that corrects all regions at once, a move kept only when no triangle
 around the point turns over or falls under `minimum_triangle_angle`): where
 a surface bends both ways, as horizons do, what one chord cuts off another
-gives back. A region whose chords all cut into it (a convex body faceted
+gives back. Points within two edges of a curve point, or of a triangle under
+that angle, stay: there the patches come closest and the surface recovery is
+most fragile. A region whose chords all cut into it (a convex body faceted
 coarsely: a tunnel, a dome) cannot be given its volume back that way; such
 regions, and those whose only curved surfaces they share, are left as the
 chords make them (`Surface_remeshing_report::number_of_regions_not_balanced`).
@@ -1213,7 +1215,7 @@ below and those of `Remeshing_sizing_field` and `detect_model_features()`
   \cgalParamNBegin{keep_region_volumes}
     \cgalParamDescription{slide the free points along the input surface until every region has its input volume (see above)}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
+    \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{sizing_field_output}
     \cgalParamDescription{receives the sizing field used in the end: the one built from `np`, plus the spacing of the curve points that had to be kept}
@@ -1253,7 +1255,7 @@ Surface_remeshing_report remesh_surfaces(const Geological_model_3<GeomTraits>& i
     choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(40));
   settings.population_rounds =
     choose_parameter(get_parameter(np, internal_np::number_of_population_steps), std::size_t(3));
-  settings.keep_region_volumes = choose_parameter(get_parameter(np, internal_np::keep_region_volumes), true);
+  settings.keep_region_volumes = choose_parameter(get_parameter(np, internal_np::keep_region_volumes), false);
   settings.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   settings.parallel = internal::Runs_in_parallel<ConcurrencyTag>::value;
   report.method = settings.method;
