@@ -19,7 +19,11 @@
 // back onto the patch. The local deviation (a chord's distance to the input)
 // stays what the size allows; what is kept is each region's volume, that is,
 // its weight in a stability analysis. Curve points do not move, so the curves
-// keep their distance to the input polylines.
+// keep their distance to the input polylines, nor do the points near curves
+// and near poor triangles (see `frozen` below). `remesh_surfaces()` runs it on
+// request (`keep_region_volumes(true)`): it keeps every median of the
+// tetrahedra but moves the single worst cell either way (bench/README.md,
+// session 57).
 
 #include <CGAL/Bubble_mesh_3/internal/centred_coordinates.h>
 #include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
