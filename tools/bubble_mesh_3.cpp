@@ -816,6 +816,7 @@ int main(int argc, char** argv)
   if(!opt.quiet)
   {
     if(report.surfaces_remeshed)
+    {
       std::cout << std::setprecision(4) << "surface remeshing: " << model.number_of_triangles() << " -> " << rr.number_of_triangles
                 << " triangles, min angle " << rr.input_min_angle << " -> " << rr.min_angle << " deg ("
                 << rr.number_of_small_angle_triangles << " triangles under " << rr.angle_bound << " deg, "
@@ -824,13 +825,13 @@ int main(int argc, char** argv)
                 << "[0.5, 1.5] of the target " << 100. * rr.input_share_of_edges_within_size
                 << " -> " << 100. * rr.share_of_edges_within_size << " %, largest region volume change "
                 << rr.max_relative_volume_error;
-    if(report.surfaces_remeshed && rr.number_of_volume_balancing_steps > 0)
-      std::cout << " (" << rr.volume_error_before_balancing << " before " << rr.number_of_volume_balancing_points
-                << " points slid along the input surfaces)";
-    if(report.surfaces_remeshed && rr.number_of_regions_not_balanced > 0 && opt.balance_volumes)
-      std::cout << " (" << rr.number_of_regions_not_balanced << " regions left out of the volume balance)";
-    if(report.surfaces_remeshed)
+      if(rr.number_of_volume_balancing_steps > 0)
+        std::cout << " (" << rr.volume_error_before_balancing << " before " << rr.number_of_volume_balancing_points
+                  << " points slid along the input surfaces)";
+      if(rr.number_of_regions_not_balanced > 0 && opt.balance_volumes)
+        std::cout << " (" << rr.number_of_regions_not_balanced << " regions left out of the volume balance)";
       std::cout << ", curve distance " << rr.max_curve_distance << " of the diagonal\n" << std::defaultfloat;
+    }
     // a user who asked for a size should know where the mesh is finer, and why
     if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size < rr.target_size)
       std::cout << std::setprecision(4) << "note: thin layers or fault tips (thickness down to "

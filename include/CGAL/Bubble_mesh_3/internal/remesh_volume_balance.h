@@ -58,7 +58,6 @@ inline std::vector<double> solve_small_system(std::vector<std::vector<double> > 
 {
   const std::size_t n = b.size();
   std::vector<std::size_t> pivot_col(n, n);
-  std::vector<char> used(n, 0);
   std::size_t row = 0;
   for(std::size_t col = 0; col < n && row < n; ++col)
   {
@@ -137,7 +136,6 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
   std::vector<std::size_t> free_points;
   for(std::size_t v = 0; v < points.size(); ++v)
     if(patch_of[v] != std::size_t(-1)) free_points.push_back(v);
-  std::vector<char> frozen(points.size(), 0);
   // Where two patches meet (a curve) they come closest, and near a triangle
   // under the angle bound (a strip narrower than the size, between curve
   // points) the tetrahedra are as fragile as they get: the surface recovery
@@ -145,23 +143,20 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
   // strips made the recovery split curve edges and left a cell of 0.15
   // degrees. The points within two edges of a curve point or of such a
   // triangle stay where the re-meshing put them.
+  std::vector<char> frozen(fixed.begin(), fixed.end());
+  frozen.resize(points.size(), 0);
+  for(const auto& tris : patch_triangles)
+    for(const Triangle& t : tris)
+      if(min_angle_degrees(points[t[0]], points[t[1]], points[t[2]]) < angle_bound)
+        for(std::size_t v : t) frozen[v] = 1;
+  for(int ring = 0; ring < 2; ++ring)
   {
-    std::vector<char> near(fixed.begin(), fixed.end());
-    near.resize(points.size(), 0);
+    std::vector<char> grown = frozen;
     for(const auto& tris : patch_triangles)
       for(const Triangle& t : tris)
-        if(min_angle_degrees(points[t[0]], points[t[1]], points[t[2]]) < angle_bound)
-          for(std::size_t v : t) near[v] = 1;
-    for(int ring = 0; ring < 2; ++ring)
-    {
-      std::vector<char> grown = near;
-      for(const auto& tris : patch_triangles)
-        for(const Triangle& t : tris)
-          if(near[t[0]] || near[t[1]] || near[t[2]])
-            for(std::size_t v : t) grown[v] = 1;
-      near.swap(grown);
-    }
-    for(std::size_t v = 0; v < points.size(); ++v) frozen[v] = near[v];
+        if(frozen[t[0]] || frozen[t[1]] || frozen[t[2]])
+          for(std::size_t v : t) grown[v] = 1;
+    frozen.swap(grown);
   }
   // the unit normal of the input triangle under each free point
   std::vector<Vec> normal(points.size(), Vec{{0., 0., 0.}});
@@ -177,8 +172,8 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
       if(sides[p].first == sides[p].second) continue;
       double sum = 0.;
       for(const Triangle& t : patch_triangles[p]) sum += signed_volume(c_of(t[0]), c_of(t[1]), c_of(t[2]));
-      if(sides[p].first < n) vol[sides[p].first] += sum;
-      if(sides[p].second < n) vol[sides[p].second] -= sum;
+      vol[sides[p].first] += sum;
+      vol[sides[p].second] -= sum;
     }
     return vol;
   };
