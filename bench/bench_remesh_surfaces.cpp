@@ -199,7 +199,8 @@ int main(int argc, char** argv)
                 << "    volume error before balancing " << r.volume_error_before_balancing << ", "
                 << r.number_of_volume_balancing_steps << " steps, " << r.number_of_volume_balancing_points
                 << " points moved, farthest " << r.largest_volume_balancing_move << " sizes, "
-                << r.number_of_regions_not_balanced << " regions left out, " << r.time_volume_balance << " s\n";
+                << r.number_of_regions_not_balanced << " regions left out, " << r.time_volume_balance << " s, "
+                << r.number_of_faceted_patches << " faceted surfaces re-meshed with their creases\n";
       for(const std::string& p : problems) std::cout << "    problem: " << p << "\n";
       details(output, r, *field);
     }

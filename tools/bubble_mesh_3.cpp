@@ -157,6 +157,9 @@ const char* usage_text =
 "                             surface along one new edge (default 22.5: 16 edges around a\n"
 "                             tunnel; smaller keeps curved bodies' volumes closer, with\n"
 "                             more tetrahedra there; 0 turns the rule off)\n"
+"  --feature-angle D          with --remesh-surfaces: a bend of over D degrees between two\n"
+"                             triangles of one surface is kept as a crease, and a turn of\n"
+"                             over D degrees along a contact curve as a corner (default 30)\n"
 "  --refine-ribbons           with --remesh-surfaces: size a ribbon (a patch between two\n"
 "                             curves meeting at under 10 degrees, e.g. a fault strip\n"
 "                             between two horizon cut lines; --check lists their corners)\n"
@@ -255,6 +258,9 @@ struct Options
   // Remeshing_sizing_field's curvature_angle
   double curvature_angle = BM::Remeshing_sizing_field<K>::default_curvature_angle;
   bool curvature_angle_given = false;
+  // detect_model_features()'s feature_angle
+  double feature_angle = 30.;
+  bool feature_angle_given = false;
   bool refine_ribbons = false;
   bool balance_volumes = false;
   // --region-size-factor and --surface-size-factor as given: name or number, factor
@@ -401,6 +407,13 @@ Options parse_options(int argc, char** argv)
       o.curvature_angle = d;
       o.curvature_angle_given = true;
     }
+    else if(a == "--feature-angle")
+    {
+      const double d = parse_double(a, value(a));
+      if(!(d > 0.) || !(d < 180.)) usage_error("--feature-angle takes degrees above 0 and under 180, got '" + args[i] + "'");
+      o.feature_angle = d;
+      o.feature_angle_given = true;
+    }
     else if(!a.empty() && a[0] == '-' && a != "-") usage_error("unknown option '" + a + "'");
     else if(o.input.empty()) o.input = a;
     else usage_error("more than one input file ('" + o.input + "' and '" + a + "')");
@@ -419,6 +432,8 @@ Options parse_options(int argc, char** argv)
     usage_error("--size-grading is a rule of --remesh-surfaces: give both");
   if(o.curvature_angle_given && !o.remesh_surfaces)
     usage_error("--curvature-angle is a rule of --remesh-surfaces: give both");
+  if(o.feature_angle_given && !o.remesh_surfaces)
+    usage_error("--feature-angle is a rule of --remesh-surfaces: give both");
   if(o.refine_ribbons && !o.remesh_surfaces)
     usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
   if(o.balance_volumes && !o.remesh_surfaces)
@@ -759,6 +774,7 @@ int main(int argc, char** argv)
                     BM::parameters::size_gradation(interior_gradation,
                     BM::parameters::curvature_angle(opt.curvature_angle,
                     BM::parameters::refine_ribbons(opt.refine_ribbons,
+                    BM::parameters::feature_angle(opt.feature_angle,
                     BM::parameters::keep_region_volumes(opt.balance_volumes,
                     // re-meshed, a region's factor sizes its surfaces and its inside follows
                     // them; kept, it scales the bubbles inside it only
@@ -770,7 +786,7 @@ int main(int argc, char** argv)
                     BM::parameters::solid_angle_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::wall_overlap_ratio(!opt.paper_overlap_ratio,
                     BM::parameters::inertial_relaxation(!opt.paper_dynamics,
-                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress)))))))))))))))))))))))))));
+                    CGAL::parameters::random_seed(opt.seed).visitor(std::ref(relaxation_progress))))))))))))))))))))))))))));
     // the size is a named parameter only when given: its absence selects the default
     auto mesh = [&](const auto& with_law) {
       if(opt.size > 0.) BM::make_bubble_mesh_3(model, c3t3, BM::parameters::edge_length(opt.size, with_law));
@@ -830,6 +846,9 @@ int main(int argc, char** argv)
                   << " points slid along the input surfaces)";
       if(rr.number_of_regions_not_balanced > 0 && opt.balance_volumes)
         std::cout << " (" << rr.number_of_regions_not_balanced << " regions left out of the volume balance)";
+      if(rr.number_of_faceted_patches > 0)
+        std::cout << " (" << rr.number_of_faceted_patches << " surfaces of convex, coarsely faceted bodies re-meshed "
+                  << "with every crease kept, as slides could not give those bodies their volume back)";
       std::cout << ", curve distance " << rr.max_curve_distance << " of the diagonal\n" << std::defaultfloat;
     }
     // a user who asked for a size should know where the mesh is finer, and why
@@ -868,13 +887,15 @@ int main(int argc, char** argv)
         if(opt.balance_volumes)
           std::cout << ": the new triangles cut across bends that all turn one way there (a convex body faceted "
                        "coarsely, or the rock around one), so sliding the new points along the input surfaces cannot "
-                       "give it back; a smaller --curvature-angle or --size shrinks the change, and without "
+                       "give it back, and its surfaces were not re-meshed with their creases kept (not tried where "
+                       "a surface has input angles under 5 degrees, not kept where more triangles came out under the "
+                       "angle bound); a smaller --curvature-angle or --size shrinks the change, and without "
                        "--remesh-surfaces the surfaces and volumes are kept exactly\n";
         else
           std::cout << ": the new triangles cut across the bends of curved surfaces; with --balance-volumes the "
-                       "new points slide along the input surfaces until every region has its volume back, unless "
-                       "the bends all turn one way (a convex body faceted coarsely); a smaller --curvature-angle "
-                       "shrinks the change\n";
+                       "new points slide along the input surfaces until every region has its volume back, and "
+                       "where the bends all turn one way (a convex body faceted coarsely) the body's surfaces are "
+                       "re-meshed with their creases kept; a smaller --curvature-angle shrinks the change\n";
         std::cout.precision(precision);
       }
     }

@@ -162,12 +162,20 @@ PY
   # factors already has 26,868 tetrahedra in foot_0, 19,575 at 2, and the factor gives 1.49
   # times as many)
   run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_remeshed.mesh" \
-      --quality-json "$tmp/tunnel_remeshed_q.json" --layer-elements 2 --balance-volumes
+      --quality-json "$tmp/tunnel_remeshed_q.json" --layer-elements 2
   check "fault-and-tunnel model re-meshed exits 0" test "$rc" -eq 0
   check "re-meshed: the note names the tunnel whose volume changed" contains "$out" "note: re-meshing changed the volume of region 6 'tunnel_bottom' by -"
-  # every new triangle cuts into the tunnel: slides along its facets cannot give the volume back
-  check "re-meshed: the tunnel and the rock around it are left out of the volume balance" \
-    contains "$out" "(4 regions left out of the volume balance)"
+  # every new triangle cuts into the tunnel: slides along its facets cannot give the volume back,
+  # so with --balance-volumes the tunnel's surfaces are re-meshed again with their creases kept
+  run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_balanced.mesh" --balance-volumes
+  check "fault-and-tunnel model re-meshed with --balance-volumes exits 0" test "$rc" -eq 0
+  check "re-meshed with --balance-volumes: the tunnel's surfaces keep their creases" \
+    contains "$out" "surfaces of convex, coarsely faceted bodies re-meshed with every crease kept"
+  tunnel_change="$(sed -n 's/.*largest region volume change \([0-9.e+-]*\).*/\1/p' <<<"$out" | head -1)"
+  echo "  fault-and-tunnel model with --balance-volumes: largest region volume change $tunnel_change"
+  check "re-meshed with --balance-volumes: every region keeps its volume within 1e-6" \
+    /usr/bin/python3 -c "import sys; assert float(sys.argv[1]) < 1e-6" "$tunnel_change"
+  check "re-meshed with --balance-volumes: no note says a volume changed" bash -c '! grep -q "changed the volume" <<<"$1"' _ "$out"
   # a region and a surface asked finer: more tetrahedra in the region (4.6 times with population
   # control, 2.3 without), more triangles on foot_2's outer walls (4.0 times; a surface whose
   # sizes the thin-layer rule sets, as the small fault's, gains only where the target binds)
@@ -207,6 +215,11 @@ PY
   run "$tmp/tunnel.obj" --remesh-surfaces --curvature-angle 11.25 --population-rounds 0 --threads 2 -o "$tmp/tunnel_curved.mesh"
   check "re-meshed with --curvature-angle 11.25 exits 0" test "$rc" -eq 0
   check "--curvature-angle 11.25: no region's volume changes by over 1 %" test "$(grep -c 'changed the volume' <<<"$out")" -eq 0
+  run "$tmp/tunnel.obj" --feature-angle 20
+  check "--feature-angle without --remesh-surfaces exits 2" test "$rc" -eq 2
+  check "--feature-angle without --remesh-surfaces says so" contains "$err" "--feature-angle is a rule of --remesh-surfaces"
+  run "$tmp/tunnel.obj" --remesh-surfaces --feature-angle 0
+  check "--feature-angle 0 exits 2 with the range" contains "$err" "--feature-angle takes degrees above 0 and under 180"
   run "$tmp/tunnel.obj" --curvature-angle 11.25
   check "--curvature-angle without --remesh-surfaces exits 2" test "$rc" -eq 2
   check "--curvature-angle without --remesh-surfaces says so" contains "$err" "--curvature-angle is a rule of --remesh-surfaces"

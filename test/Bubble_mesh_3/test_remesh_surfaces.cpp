@@ -33,6 +33,7 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 typedef K::Vector_3 Vector;
+typedef K::Segment_3 Segment;
 typedef CGAL::Bubble_mesh_3::Geological_model_3<K> Model;
 namespace BM = CGAL::Bubble_mesh_3;
 
@@ -417,9 +418,10 @@ void test_far_from_origin()
 // an edge's length and its turn, which holds on even triangles). Each edge
 // along the axis turns by 15 degrees, under the feature angle. The rule
 // sizes the pipe's sides by the angle a new edge may turn, the walls not at all.
-void test_curvature_rule()
+// A pipe of radius 1 (24 sides: creases of 15 degrees, under the feature
+// angle, so one curved patch with its end caps) along x through a 10-box
+Model pipe_model()
 {
-  std::cout << "curvature rule on a pipe\n";
   const double pi = 3.14159265358979323846;
   const int n = 24;
   Builder b;
@@ -447,7 +449,18 @@ void test_curvature_rule()
   }
   b.polygon(sides, left, Point(2, 5, 5), Vector(-1, 0, 0));
   b.polygon(sides, right, Point(8, 5, 5), Vector(1, 0, 0));
-  const Model& m = b.model;
+  return b.model;
+}
+
+void test_curvature_rule()
+{
+  std::cout << "curvature rule on a pipe\n";
+  const double pi = 3.14159265358979323846;
+  const int n = 24;
+  auto ring = [&](double x, int i) { return Point(x, 5 + std::cos(2 * pi * i / n), 5 + std::sin(2 * pi * i / n)); };
+  const std::size_t outer = 0, sides = 1;
+  const Model m = pipe_model();
+  assert(m.patch(sides).name == "pipe" && m.patch(outer).name == "outer");
   BM::validate_geological_model(m);
   const BM::Model_features f = BM::detect_model_features(m);
   auto field = [&](double angle) {
@@ -656,6 +669,58 @@ void test_overhang()
   assert(moved == r.number_of_volume_balancing_points);
   assert(r.number_of_small_angle_triangles <= u.number_of_small_angle_triangles);
   assert(r.min_angle >= (std::min)(u.min_angle, 25.) - 1e-9);
+}
+
+// The pipe is convex and faceted coarsely: every chord across its creases
+// cuts into it, so no slide along its surface gives its volume back, and the
+// rock around it gains what it loses. With keep_region_volumes, its patch is
+// re-meshed again with every crease kept as a curve.
+void test_faceted_body()
+{
+  std::cout << "remesh_surfaces keeping the volume of a faceted pipe\n";
+  const Model input = pipe_model();
+  const auto np = BM::parameters::edge_length(1.);
+  Model chords;
+  const BM::Surface_remeshing_report u = BM::remesh_surfaces(input, chords, np);
+  std::cout << "  without the balance: largest relative volume error " << u.max_relative_volume_error << "\n";
+  assert(u.max_relative_volume_error > 1e-4);
+  assert(u.number_of_faceted_patches == 0);
+
+  Model output;
+  BM::Remeshing_sizing_field<K> field(input, BM::detect_model_features(input), np);
+  const BM::Surface_remeshing_report r = BM::remesh_surfaces(
+    input, output, BM::parameters::sizing_field_output(&field, BM::parameters::keep_region_volumes(true, np)));
+  print("faceted pipe", r);
+  // the pipe's patch only: the outer walls bound the rock, which was left out
+  // too, but they are flat and have no crease to keep
+  assert(r.number_of_faceted_patches == 1);
+  assert(r.number_of_regions_not_balanced == 0);
+  // the field with the creases as curves: its own measure of the sizes
+  check_remeshed(input, output, r, field, field, true, true);
+  // every crease of the pipe lies along output edges (the chords cut across them)
+  std::vector<Segment> edges;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+    for(int k = 0; k < 3; ++k)
+      edges.push_back(Segment(output.point(output.triangle(t)[k]), output.point(output.triangle(t)[(k + 1) % 3])));
+  const BM::internal::Edge_triangles_map et = BM::internal::edge_triangles(input);
+  std::size_t creases = 0;
+  for(const auto& e : et)
+  {
+    if(e.second.size() != 2 || input.patch_of_triangle(e.second[0]) != 1 || input.patch_of_triangle(e.second[1]) != 1)
+      continue;
+    const auto normal = [&](std::size_t t) {
+      const auto& tri = input.triangle(t);
+      return CGAL::unit_normal(input.point(tri[0]), input.point(tri[1]), input.point(tri[2]));
+    };
+    if(normal(e.second[0]) * normal(e.second[1]) > 0.9999) continue; // within one flat facet or cap
+    ++creases;
+    const Point m = CGAL::midpoint(input.point(e.first.first), input.point(e.first.second));
+    double nearest = 1.;
+    for(const Segment& s : edges) nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(m, s)));
+    assert(nearest < 1e-9);
+  }
+  std::cout << "  " << creases << " input crease edges, each along output edges\n";
+  assert(creases >= 24 * 24);
 }
 
 // A ribbon: the top face of a box holds a strip between two curves that meet at
@@ -877,6 +942,7 @@ int main(int argc, char** argv)
   test_in_memory(BM::Surface_remeshing_method::BUBBLES);
   test_in_memory(BM::Surface_remeshing_method::ISOTROPIC);
   test_overhang();
+  test_faceted_body();
   test_ribbon();
   test_collapse_crowded_vertex();
   test_thin_layer_sides(0.2);

@@ -112,6 +112,10 @@ double angle_between_degrees(const Vector& a, const Vector& b)
   return std::acos(c) * 180. / 3.14159265358979323846;
 }
 
+template <class GeomTraits>
+Model_features detect_model_features(const Geological_model_3<GeomTraits>& model, double angle,
+                                     const std::vector<double>& crease_angles);
+
 } // namespace internal
 
 /*!
@@ -148,12 +152,24 @@ Model_features detect_model_features(const Geological_model_3<GeomTraits>& model
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  return internal::detect_model_features(model, choose_parameter(get_parameter(np, internal_np::feature_angle), 30.),
+                                         std::vector<double>());
+}
+
+namespace internal {
+
+// detect_model_features() with, for each patch p with crease_angles[p] > 0,
+// that angle instead of `angle` for the creases inside p (the faceted
+// patches remesh_surfaces() keeps whole; an empty vector: none)
+template <class GeomTraits>
+Model_features detect_model_features(const Geological_model_3<GeomTraits>& model, double angle,
+                                     const std::vector<double>& crease_angles)
+{
   typedef typename GeomTraits::Vector_3 Vector_3;
   typedef std::pair<std::size_t, std::size_t> Edge;
 
   Model_features features;
-  features.feature_angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 30.);
-  const double angle = features.feature_angle;
+  features.feature_angle = angle;
 
   features.patch_triangles.assign(model.number_of_patches(), std::vector<std::size_t>());
   for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
@@ -182,8 +198,12 @@ Model_features detect_model_features(const Geological_model_3<GeomTraits>& model
     const std::vector<std::size_t>& ts = e.second;
     bool feature = true;
     if(ts.size() == 2 && model.patch_of_triangle(ts[0]) == model.patch_of_triangle(ts[1]))
+    {
+      const std::size_t p = model.patch_of_triangle(ts[0]);
+      const double crease = (p < crease_angles.size() && crease_angles[p] > 0.) ? crease_angles[p] : angle;
       feature = !is_sliver_along(ts[0], e.first) && !is_sliver_along(ts[1], e.first) &&
-                internal::angle_between_degrees(normal(ts[0]), normal(ts[1])) > angle;
+                internal::angle_between_degrees(normal(ts[0]), normal(ts[1])) > crease;
+    }
     if(feature) feature_edges.push_back(e.first);
   }
   std::sort(feature_edges.begin(), feature_edges.end()); // hash order is not deterministic
@@ -266,6 +286,8 @@ Model_features detect_model_features(const Geological_model_3<GeomTraits>& model
     for(std::size_t p : features.curves[c].patches) features.patch_curves[p].push_back(c);
   return features;
 }
+
+} // namespace internal
 
 } // namespace Bubble_mesh_3
 } // namespace CGAL

@@ -130,9 +130,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Surface_remeshing_method, surface_remeshing_m
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_population_steps)
 /// \ingroup PkgBubbleMesh3Ref
 /// slides the free points of the re-meshed patches along the input surface
-/// until every region encloses its input volume again (default `false`: each
-/// region differs by the chords' error, about 1e-4 of its volume on curved
-/// horizons)
+/// until every region encloses its input volume again, and re-meshes the
+/// surfaces of convex, coarsely faceted bodies, which slides cannot balance,
+/// with their creases kept (default `false`: each region differs by the
+/// chords' error, about 1e-4 of its volume on curved horizons)
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, keep_region_volumes)
 
 /// \ingroup PkgBubbleMesh3Ref
