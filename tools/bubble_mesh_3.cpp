@@ -888,8 +888,8 @@ int main(int argc, char** argv)
           std::cout << ": the new triangles cut across bends that all turn one way there (a convex body faceted "
                        "coarsely, or the rock around one), so sliding the new points along the input surfaces cannot "
                        "give it back, and its surfaces were not re-meshed with their creases kept (not tried where "
-                       "a surface has input angles under 5 degrees, not kept where more triangles came out under the "
-                       "angle bound); a smaller --curvature-angle or --size shrinks the change, and without "
+                       "a surface has input angles under 5 degrees, not kept where more triangles came out under 20 "
+                       "degrees); a smaller --curvature-angle or --size shrinks the change, and without "
                        "--remesh-surfaces the surfaces and volumes are kept exactly\n";
         else
           std::cout << ": the new triangles cut across the bends of curved surfaces; with --balance-volumes the "
