@@ -192,6 +192,10 @@ public:
     std::size_t relaxation_steps = 40;
     std::size_t population_rounds = 3;
     bool keep_region_volumes = false;
+    // patches whose free points the volume balance leaves where they are:
+    // re-meshed with their creases kept, they lie flat between them, where a
+    // slide changes no volume and the balance's steps would only wander
+    std::vector<char> unbalanced_patches;
     bool verbose = false;
     bool parallel = false; // charts triangulated on several threads
   };
@@ -798,10 +802,15 @@ private:
     // chords; after three failures no point moves.
     const double converged = 1e-7;
     const std::vector<Point_3> chords = out_points_;
+    std::vector<char> fixed = out_fixed_;
+    for(std::size_t p = 0; p < set_.unbalanced_patches.size() && p < patch_out_.size(); ++p)
+      if(set_.unbalanced_patches[p])
+        for(const Triangle& t : patch_out_[p])
+          for(std::size_t v : t) fixed[v] = 1;
     Volume_balance_result balance;
     for(int attempt = 0;; ++attempt)
     {
-      balance = balance_region_volumes(out_points_, patch_out_, out_fixed_, sides, target, balanced, box_centre(in_),
+      balance = balance_region_volumes(out_points_, patch_out_, fixed, sides, target, balanced, box_centre(in_),
                                        project, size, set_.angle_bound);
       if(attempt == 0) report_.volume_error_before_balancing = balance.error_before;
       if(balance.error_after <= converged) break;
@@ -1383,6 +1392,8 @@ Surface_remeshing_report remesh_surfaces(const Geological_model_3<GeomTraits>& i
       Geological_model_3<GeomTraits> faceted_output;
       std::unique_ptr<Sizing> faceted_sizing;
       std::vector<std::size_t> still;
+      settings.unbalanced_patches.assign(crease_angles.size(), 0);
+      for(std::size_t p = 0; p < crease_angles.size(); ++p) settings.unbalanced_patches[p] = (crease_angles[p] > 0.);
       remesh(faceted_features, faceted_output, again, faceted_sizing, still);
       // the triangles well under the bound (needles brought back), whether the input forces them or not
       auto poor = [&](const Geological_model_3<GeomTraits>& m) {

@@ -20,7 +20,9 @@
 // stays what the size allows; what is kept is each region's volume, that is,
 // its weight in a stability analysis. Curve points do not move, so the curves
 // keep their distance to the input polylines, nor do the points near curves
-// and near poor triangles (see `frozen` below). `remesh_surfaces()` runs it on
+// and near poor triangles (see `frozen` below). A step that makes no region
+// better is undone and ends the iteration (where the patches lie flat the
+// solve has nothing to hold on to). `remesh_surfaces()` runs it on
 // request (`keep_region_volumes(true)`): it keeps every median of the
 // tetrahedra but moves the single worst cell either way (bench/README.md,
 // session 57).
@@ -258,6 +260,9 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
       if(d > max_step * h) scale = (std::min)(scale, max_step * h / d);
     }
     std::size_t moves = 0;
+    const std::vector<Point_3> before_step = points;
+    const std::vector<Vec> normals_before_step = normal;
+    const std::vector<double> moved_before_step = moved;
     for(std::size_t v : free_points)
     {
       const double f = scale * (lambda[kept[patch_of[v]].first] - lambda[kept[patch_of[v]].second]);
@@ -285,7 +290,18 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
       moved[v] += d / size(points[v], patch_of[v]);
       ++moves;
     }
-    vol = volumes();
+    const std::vector<double> vol_after = volumes();
+    // A step that makes no region better is undone, and the balance ends: where the
+    // patches lie flat (a faceted body's, between its kept creases) slides change no
+    // volume, and the solve's steps there would only wander
+    if(!(worst_error(vol_after) < result.error_after))
+    {
+      points = before_step;
+      normal = normals_before_step;
+      moved = moved_before_step;
+      break;
+    }
+    vol = vol_after;
     result.error_after = worst_error(vol);
     if(moves == 0) break;
   }
