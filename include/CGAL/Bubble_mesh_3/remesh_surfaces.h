@@ -145,6 +145,14 @@ constexpr double faceted_patch_crease_angle = 0.01;
 // of 24.6 degrees, and its volume change 8.3e-3 -> 4.7e-9)
 constexpr double faceted_patch_angle_slack = 5.;
 
+// the smallest angle of triangle t of `model`, in degrees
+template <class GeomTraits>
+double triangle_min_angle(const Geological_model_3<GeomTraits>& model, std::size_t t)
+{
+  const auto& tri = model.triangle(t);
+  return min_angle_degrees(model.point(tri[0]), model.point(tri[1]), model.point(tri[2]));
+}
+
 // the smallest angle of each patch's input triangles, in degrees
 template <class GeomTraits>
 std::vector<double> patch_smallest_angles(const Geological_model_3<GeomTraits>& model)
@@ -152,9 +160,8 @@ std::vector<double> patch_smallest_angles(const Geological_model_3<GeomTraits>& 
   std::vector<double> smallest(model.number_of_patches(), 180.);
   for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
   {
-    const auto& tri = model.triangle(t);
     double& s = smallest[model.patch_of_triangle(t)];
-    s = (std::min)(s, min_angle_degrees(model.point(tri[0]), model.point(tri[1]), model.point(tri[2])));
+    s = (std::min)(s, triangle_min_angle(model, t));
   }
   return smallest;
 }
@@ -823,7 +830,6 @@ private:
     report_.number_of_volume_balancing_steps = balance.iterations;
     report_.number_of_volume_balancing_points = balance.moved_points;
     report_.largest_volume_balancing_move = balance.largest_move;
-    report_.number_of_regions_not_balanced = 0;
     not_balanced_.clear();
     for(std::size_t r = 1; r < balanced.size(); ++r)
       if(!balanced[r]) not_balanced_.push_back(r);
@@ -960,15 +966,11 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
   report.number_of_triangles = output.number_of_triangles();
 
   // angles, and which small angles the input forces (a narrow sector at a curve point)
-  auto min_angle_of = [](const Geological_model_3<GeomTraits>& m, std::size_t t) {
-    const auto& tri = m.triangle(t);
-    return min_angle_degrees(m.point(tri[0]), m.point(tri[1]), m.point(tri[2]));
-  };
   report.input_min_angle = 180.;
   std::size_t input_small = 0;
   for(std::size_t t = 0; t < input.number_of_triangles(); ++t)
   {
-    const double a = min_angle_of(input, t);
+    const double a = triangle_min_angle(input, t);
     report.input_min_angle = (std::min)(report.input_min_angle, a);
     if(a < bound) ++input_small;
   }
@@ -1025,7 +1027,7 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
   report.number_of_small_angle_triangles_between_curve_points = 0;
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
   {
-    const double a = min_angle_of(output, t);
+    const double a = triangle_min_angle(output, t);
     report.min_angle = (std::min)(report.min_angle, a);
     if(a >= bound) continue;
     ++report.number_of_small_angle_triangles;
@@ -1398,9 +1400,8 @@ Surface_remeshing_report remesh_surfaces(const Geological_model_3<GeomTraits>& i
       // the triangles well under the bound (needles brought back), whether the input forces them or not
       auto poor = [&](const Geological_model_3<GeomTraits>& m) {
         std::size_t n = 0;
-        for(const auto& tri : m.triangles())
-          n += (internal::min_angle_degrees(m.point(tri[0]), m.point(tri[1]), m.point(tri[2])) <
-                settings.angle_bound - internal::faceted_patch_angle_slack);
+        for(std::size_t t = 0; t < m.number_of_triangles(); ++t)
+          n += (internal::triangle_min_angle(m, t) < settings.angle_bound - internal::faceted_patch_angle_slack);
         return n;
       };
       if(again.max_relative_volume_error < report.max_relative_volume_error && poor(faceted_output) <= poor(output))
