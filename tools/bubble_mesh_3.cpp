@@ -900,6 +900,11 @@ int main(int argc, char** argv)
         std::cout.precision(precision);
       }
     }
+    if(report.axis_plane_snap.number_of_points > 0)
+      std::cout << std::setprecision(3) << "note: " << report.axis_plane_snap.number_of_points
+                << " points lay a hair off the axis plane of a box wall they are on (by up to "
+                << report.axis_plane_snap.largest_move
+                << "): they were given its coordinate, so that the wall is one plane\n" << std::defaultfloat;
     if(report.thickness_rule_relaxed)
       std::cout << "note: the surface recovery failed on the re-meshed surfaces: " << report.thickness_rule_relaxed_because
                 << "; they were re-meshed again with --layer-elements " << report.elements_across_thickness_used

@@ -14,6 +14,7 @@
 #include <CGAL/Bubble_mesh_3/relax_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remesh_surfaces.h>
 #include <CGAL/Bubble_mesh_3/retriangulate_planar_patches.h>
+#include <CGAL/Bubble_mesh_3/snap_points_to_axis_planes.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remove_slivers.h>
@@ -36,6 +37,7 @@ What `make_bubble_mesh_3()` did, stage by stage.
 */
 struct Bubble_mesh_report
 {
+  Axis_plane_snap_report axis_plane_snap;     ///< the model's points given back their box wall's plane (`snap_points_to_axis_planes()`), before anything else
   bool surfaces_remeshed = false;             ///< whether stage 0 ran (`remesh_input_surfaces`)
   Surface_remeshing_report surface_remeshing; ///< stage 0 (`remesh_surfaces()`), if it ran
   bool planar_patches_retriangulated = false; ///< whether planar pieces were re-triangulated (`retriangulate_planar_patches()`)
@@ -103,6 +105,11 @@ input surfaces recovered and the cells labelled by region
 (`tetrahedralize_bubbles()`), and sliver removal by moving interior vertices
 only (`remove_slivers()`; pass `perturb_interior_vertices(false)` to skip it).
 
+Before anything else, points written a hair off a box wall's axis plane (within
+the coplanarity tolerance, a thousand rounding units of the largest
+coordinate) get its coordinate back (`snap_points_to_axis_planes()`,
+`Bubble_mesh_report::axis_plane_snap`): the stages run on that copy.
+
 With `remesh_input_surfaces(true)`, the surfaces are first re-meshed with
 bubbles (`remesh_surfaces()`, stage 0) and the stages run on the re-meshed
 model: same regions and patches, so the mesh is labelled as the input is.
@@ -150,7 +157,7 @@ stages is accepted here too.
 (also when the re-meshed surfaces are not a valid model)
 */
 template <class GeomTraits, class NamedParameters = CGAL::parameters::Default_named_parameters>
-Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& input_model,
+Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& given_model,
                                       Mesh_complex_3<GeomTraits>& c3t3,
                                       const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -161,6 +168,13 @@ Bubble_mesh_report make_bubble_mesh_3(const Geological_model_3<GeomTraits>& inpu
   const std::function<void(const std::string&)> stage =
     choose_parameter(get_parameter(np, internal_np::stage_callback), std::function<void(const std::string&)>());
   auto start = [&](const char* name) { if(stage) stage(name); };
+
+  // box walls whose points were written a hair off their planes get them
+  // back: every later stage keeps axis planes exactly planar
+  Geological_model_3<GeomTraits> snapped = given_model;
+  report->axis_plane_snap = snap_points_to_axis_planes(snapped);
+  const Geological_model_3<GeomTraits>& input_model =
+    report->axis_plane_snap.number_of_points > 0 ? snapped : given_model;
 
   Real_timer timer;
   // runs one stage, its seconds added to `seconds` (also when it throws: a

@@ -19,6 +19,17 @@ run() { # run ARGS... : sets rc, out, err
   out="$(cat "$tmp/out")"; err="$(cat "$tmp/err")"
 }
 contains() { case "$1" in *"$2"*) return 0;; *) echo "  expected '$2' in: $1" | head -5; return 1;; esac; }
+# meshed_volumes SUMMARY_JSON QUALITY_JSON: "N regions, all meshed with their volumes" when every
+# region of --check --summary-json has tetrahedra whose volume is its own within 1e-9, else the wrong ones
+meshed_volumes() {
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import json, sys
+model = {r["name"]: r["volume"] for r in json.load(open(sys.argv[1]))["regions"]}
+mesh = {r["name"]: (r["tetrahedra"], r["volume"]) for r in json.load(open(sys.argv[2]))["regions"]}
+bad = [n for n, v in model.items() if n not in mesh or mesh[n][0] == 0 or abs(mesh[n][1] - v) > 1e-9 * v]
+print("%d regions, %s" % (len(model), "all meshed with their volumes" if not bad else "wrong: " + " ".join(bad)))
+PY
+}
 
 run --help
 check "--help exits 0" test "$rc" -eq 0
@@ -146,14 +157,7 @@ if /usr/bin/python3 -c "import gmsh" 2>/dev/null; then
     contains "$out" "surfaces (the names --surface-size-factor takes): 'foot_0/foot', 'foot_0/hang' (2 parts), "
   run "$tmp/tunnel.obj" --threads 2 -o "$tmp/tunnel.mesh" --quality-json "$tmp/tunnel_quality.json"
   check "fault-and-tunnel model meshes" test "$rc" -eq 0
-  volumes="$(/usr/bin/python3 - "$tmp/tunnel_summary.json" "$tmp/tunnel_quality.json" <<'PY'
-import json, sys
-model = {r["name"]: r["volume"] for r in json.load(open(sys.argv[1]))["regions"]}
-mesh = {r["name"]: (r["tetrahedra"], r["volume"]) for r in json.load(open(sys.argv[2]))["regions"]}
-bad = [n for n, v in model.items() if n not in mesh or mesh[n][0] == 0 or abs(mesh[n][1] - v) > 1e-9 * v]
-print("%d regions, %s" % (len(model), "all meshed with their volumes" if not bad else "wrong: " + " ".join(bad)))
-PY
-)"
+  volumes="$(meshed_volumes "$tmp/tunnel_summary.json" "$tmp/tunnel_quality.json")"
   echo "  fault-and-tunnel model: $volumes"
   check "fault-and-tunnel model: 8 regions, each meshed with its volume" test "$volumes" = "8 regions, all meshed with their volumes"
   # re-meshed, the tunnel's 16 facets become fewer chords: the program says which volumes changed.
@@ -242,12 +246,20 @@ print("  folded model: volume change %s after, %s before %s points slid" % m.gro
 sys.exit(0 if float(m.group(2)) > 1e-5 and float(m.group(1)) < 1e-9 and int(m.group(3)) > 0 else 1)
 PY
   check "folded model re-meshed: each region meshed with its input volume (1e-9)" \
-    /usr/bin/python3 - "$tmp/fold_summary.json" "$tmp/fold_q.json" <<'PY'
-import json, sys
-model = {r["name"]: r["volume"] for r in json.load(open(sys.argv[1]))["regions"]}
-mesh = {r["name"]: r["volume"] for r in json.load(open(sys.argv[2]))["regions"]}
-sys.exit(0 if set(model) == set(mesh) and all(abs(mesh[n] - v) <= 1e-9 * v for n, v in model.items()) else 1)
-PY
+    test "$(meshed_volumes "$tmp/fold_summary.json" "$tmp/fold_q.json")" = "2 regions, all meshed with their volumes"
+  # a graben whose faults end inside the bodies at both ends, a thin layer and a lens, as Gmsh
+  # writes them: 9 cut points on the wall y = 0 lie up to 3.6e-11 off its plane. Before they were
+  # given the wall's coordinate back, the surface recovery failed on that wall
+  /usr/bin/python3 "$root/bench/make_graben_model.py" "$tmp/graben.obj" --edge 200
+  run "$tmp/graben.obj" --check --summary-json "$tmp/graben_summary.json"
+  check "graben model: --check exits 0" test "$rc" -eq 0
+  run "$tmp/graben.obj" --threads 2 -o "$tmp/graben.mesh" --quality-json "$tmp/graben_quality.json"
+  check "graben model with points a hair off a wall meshes" test "$rc" -eq 0
+  check "graben model: the note says the points were put back on the wall" \
+    contains "$out" "points lay a hair off the axis plane of a box wall they are on"
+  volumes="$(meshed_volumes "$tmp/graben_summary.json" "$tmp/graben_quality.json")"
+  echo "  graben model: $volumes"
+  check "graben model: 9 regions, each meshed with its volume" test "$volumes" = "9 regions, all meshed with their volumes"
 else
   echo "SKIP: python3-gmsh is not installed (scripts/install_deps.sh --tests installs it)"
 fi

@@ -10,6 +10,7 @@
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/geological_model_summary.h>
 #include <CGAL/Bubble_mesh_3/orient_patch_sides.h>
+#include <CGAL/Bubble_mesh_3/snap_points_to_axis_planes.h>
 #include <CGAL/Bubble_mesh_3/validate_geological_model.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -648,6 +649,55 @@ void test_orient_patch_sides()
 
 } // namespace
 
+// Points a hair off a box wall (as where a horizon's cut line meets a wall in
+// a Gmsh export) get the wall's coordinate back; a point farther off, or one
+// whose move would flatten a triangle, stays.
+void test_snap_points_to_axis_planes()
+{
+  Model m = two_layers_with_fault(2);
+  assert(BM::snap_points_to_axis_planes(m).number_of_points == 0); // nothing off: nothing moves
+  std::vector<std::size_t> off;
+  std::size_t far_off = m.number_of_points();
+  for(std::size_t v = 0; v < m.number_of_points(); ++v)
+  {
+    const Point& p = m.point(v);
+    // the horizon's cut line on the wall y = 0, a hair off it, but for its ends (so that
+    // the wall keeps triangles on its plane); one point of the top's cut line a millimetre off
+    if(p.y() != 0. || p.x() == 0. || p.x() == 3.) continue;
+    if(p.z() == 1.)
+    {
+      m.set_point(v, Point(p.x(), off.size() % 2 ? 3e-14 : -2e-14, p.z()));
+      off.push_back(v);
+    }
+    else if(p.z() == 2. && far_off == m.number_of_points())
+    {
+      far_off = v;
+      m.set_point(v, Point(p.x(), 1e-3, p.z()));
+    }
+  }
+  assert(off.size() > 4 && far_off < m.number_of_points());
+  const BM::Axis_plane_snap_report r = BM::snap_points_to_axis_planes(m);
+  std::cout << "snap: " << r.number_of_points << " of " << off.size() << " points, by up to " << r.largest_move << std::endl;
+  assert(r.number_of_points == off.size());
+  assert(r.largest_move == 3e-14);
+  for(std::size_t v : off) assert(m.point(v).y() == 0.);
+  assert(m.point(far_off).y() == 1e-3);
+  BM::validate_geological_model(m);
+
+  // a wall triangle a hair off y = 0 whose point also ends a flat sliver of another patch:
+  // on the wall that point would make the sliver a segment, so it stays
+  Model f;
+  const std::size_t r1 = f.add_region("r");
+  const std::size_t wall = f.add_patch("wall", 0, r1), other = f.add_patch("other", r1, 0);
+  const std::size_t a = f.add_point(Point(0, 0, 0)), b = f.add_point(Point(1, 0, 0)), c = f.add_point(Point(0, 0, 1));
+  const std::size_t d = f.add_point(Point(2, 1e-14, 0)), e = f.add_point(Point(1, 0, 1));
+  f.add_triangle(a, b, c, wall);  // exactly on y = 0: the wall's plane
+  f.add_triangle(b, d, e, wall);  // d a hair off it
+  f.add_triangle(a, b, d, other); // a, b, d: collinear once d is on the wall
+  const BM::Axis_plane_snap_report flat = BM::snap_points_to_axis_planes(f);
+  assert(flat.number_of_points == 0 && f.point(d).y() == 1e-14);
+}
+
 int main()
 {
   test_good_models();
@@ -655,6 +705,7 @@ int main()
   test_triangle_pairs();
   test_bad_files();
   test_orient_patch_sides();
+  test_snap_points_to_axis_planes();
   test_summary();
   test_contact_angles();
   test_timing();
