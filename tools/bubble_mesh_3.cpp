@@ -750,6 +750,16 @@ int main(int argc, char** argv)
       if(opt.quiet) return;
       if(open_line) std::cout << "\n";
       open_line = false;
+      // the re-meshed surfaces' size tells early how long the rest will take (a thin
+      // layer across a large model makes its horizons millions of triangles)
+      const BM::Surface_remeshing_report& rr = report.surface_remeshing;
+      if(stage == "surface bubbles" && report.surfaces_remeshed)
+      {
+        std::cout << std::setprecision(4) << "  surfaces re-meshed: " << rr.number_of_triangles << " triangles, edges ";
+        if(rr.smallest_thickness_size > 0. && rr.smallest_thickness_size < rr.target_size)
+          std::cout << "from " << rr.smallest_thickness_size << " (across thin layers and at fault tips) to ";
+        std::cout << "the target " << rr.target_size << "\n" << std::defaultfloat;
+      }
       std::cout << "[" << std::fixed << std::setprecision(1) << stage_timer.time() << " s] " << stage << "...\n"
                 << std::defaultfloat << std::flush;
     };

@@ -138,6 +138,8 @@ if /usr/bin/python3 -c "import gmsh" 2>/dev/null; then
   run "$tmp/pinch.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/pinch.mesh"
   check "pinch-out model re-meshed exits 0" test "$rc" -eq 0
   check "pinch-out model re-meshed writes its mesh" test -s "$tmp/pinch.mesh"
+  check "the new surfaces' triangles and edges are told before the volume stages run" \
+    test -n "$(sed -n '/^  surfaces re-meshed: [0-9]* triangles, edges from [0-9.]* (across thin layers and at fault tips) to the target /,$p' <<<"$out" | grep '^\[.* s\] surface bubbles\.\.\.')"
   check "pinch-out model re-meshed: every region has tetrahedra" \
     test "$(grep -cE '^  [123] (lower|upper|wedge) +[1-9]' <<<"$out")" -eq 3
   if grep -q "note: the surface recovery failed on the re-meshed surfaces" <<<"$out"; then
