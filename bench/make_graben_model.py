@@ -82,8 +82,11 @@ def main():
     def body_name(x, z, volume):
         if volume < 1e7 and abs(x - 600.) < 100. and abs(z - 400.) < 30.:
             return "lens"
-        tops = BASES + (BASES[1] + a.thickness / 2.,)
-        layer = sum(1 for b in tops if z > b + 0.08 * x + mean_wave)
+        # a body's centre lies mid-way between its horizons (the B-splines only approach
+        # horizon_z, by metres: a thin layer's centre is not told apart from its horizons)
+        middle, thin = sum(BASES) / 2., BASES[1] + a.thickness / 2.
+        between = (BASES[0], (middle + thin) / 2., thin + 50.)
+        layer = sum(1 for b in between if z > b + 0.08 * x + mean_wave)
         if layer in (1, 2):  # the faults cut these: west of both, the graben, east of both
             cot = 1. / math.tan(math.radians(60.))
             side = "w" if x < 1000. - (z - 120.) * cot else "e" if x > 2000. + (z - 120.) * cot else "g"
