@@ -613,6 +613,17 @@ void check_mesh_size(const BM::Geological_model_3<K>& model, const BM::Geologica
     std::cout << "warning: " << what.str() << ": the run may not fit in memory\n";
 }
 
+// the points make_bubble_mesh_3() gives a box wall's coordinate back (or, with
+// --check, will)
+void print_axis_plane_snap(const BM::Axis_plane_snap_report& snap, bool done)
+{
+  if(snap.number_of_points == 0) return;
+  std::cout << std::setprecision(3) << "note: " << snap.number_of_points << " points l" << (done ? "ay" : "ie")
+            << " a hair off the axis plane of a box wall they are on (by up to " << snap.largest_move << "): "
+            << (done ? "they were given" : "meshing gives them") << " its coordinate, so that the wall is one plane\n"
+            << std::defaultfloat;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -700,7 +711,11 @@ int main(int argc, char** argv)
   const std::vector<double> patch_factors = factors_by_patch(model, opt, factor_log);
   if(!opt.quiet) std::cout << factor_log.str();
   if(opt.check && !opt.quiet)
+  {
     std::cout << "surfaces (the names --surface-size-factor takes): " << list_surfaces(surface_names(model), 200) << "\n";
+    BM::Geological_model_3<K> snapped = model;
+    print_axis_plane_snap(BM::snap_points_to_axis_planes(snapped), false);
+  }
   if(opt.check) return 0;
   if(opt.remesh_surfaces || !region_factors.empty()) check_mesh_size(model, summary, opt, region_factors);
 
@@ -910,11 +925,7 @@ int main(int argc, char** argv)
         std::cout.precision(precision);
       }
     }
-    if(report.axis_plane_snap.number_of_points > 0)
-      std::cout << std::setprecision(3) << "note: " << report.axis_plane_snap.number_of_points
-                << " points lay a hair off the axis plane of a box wall they are on (by up to "
-                << report.axis_plane_snap.largest_move
-                << "): they were given its coordinate, so that the wall is one plane\n" << std::defaultfloat;
+    print_axis_plane_snap(report.axis_plane_snap, true);
     if(report.thickness_rule_relaxed)
       std::cout << "note: the surface recovery failed on the re-meshed surfaces: " << report.thickness_rule_relaxed_because
                 << "; they were re-meshed again with --layer-elements " << report.elements_across_thickness_used

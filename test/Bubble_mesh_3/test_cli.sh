@@ -255,6 +255,8 @@ PY
   /usr/bin/python3 "$root/bench/make_graben_model.py" "$tmp/graben.obj" --edge 200
   run "$tmp/graben.obj" --check --summary-json "$tmp/graben_summary.json"
   check "graben model: --check exits 0" test "$rc" -eq 0
+  check "graben model: --check says meshing puts 9 points back on their wall" \
+    contains "$out" "note: 9 points lie a hair off the axis plane of a box wall they are on"
   run "$tmp/graben.obj" --threads 2 -o "$tmp/graben.mesh" --quality-json "$tmp/graben_quality.json"
   check "graben model with points a hair off a wall meshes" test "$rc" -eq 0
   check "graben model: the note says the points were put back on the wall" \
