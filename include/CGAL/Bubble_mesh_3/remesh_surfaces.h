@@ -10,6 +10,7 @@
 #include <CGAL/Bubble_mesh_3/Remeshing_sizing_field.h>
 #include <CGAL/Bubble_mesh_3/geological_model_measures.h>
 #include <CGAL/Bubble_mesh_3/model_features.h>
+#include <CGAL/Bubble_mesh_3/snap_points_to_axis_planes.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_chart_triangulation.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_charts.h>
 #include <CGAL/Bubble_mesh_3/internal/remesh_mesh_improvement.h>
@@ -847,14 +848,7 @@ private:
   void snap_to_axis_planes()
   {
     typedef typename GeomTraits::FT FT;
-    std::vector<std::array<std::set<FT>, 3> > levels(in_.number_of_patches());
-    for(std::size_t t = 0; t < in_.number_of_triangles(); ++t)
-    {
-      const auto& tri = in_.triangle(t);
-      for(int k = 0; k < 3; ++k)
-        if(in_.point(tri[0])[k] == in_.point(tri[1])[k] && in_.point(tri[0])[k] == in_.point(tri[2])[k])
-          levels[in_.patch_of_triangle(t)][k].insert(in_.point(tri[0])[k]);
-    }
+    const std::vector<std::array<std::set<FT>, 3> > levels = internal::patch_axis_planes(in_);
     const double diagonal = bbox_diagonal(in_);
     for(std::size_t p = 0; p < patch_out_.size() && p < levels.size(); ++p)
       for(int k = 0; k < 3; ++k)
@@ -865,9 +859,7 @@ private:
           {
             const Point_3& q = out_points_[v];
             std::array<FT, 3> c{{q.x(), q.y(), q.z()}};
-            // the nearest level: the first at or above, or the one below
-            auto it = levels[p][k].lower_bound(c[k]);
-            if(it == levels[p][k].end() || (it != levels[p][k].begin() && c[k] - *std::prev(it) < *it - c[k])) --it;
+            const auto it = internal::nearest_axis_plane(levels[p][k], c[k]);
             const double level = CGAL::to_double(*it);
             const double tolerance = 16. * std::numeric_limits<double>::epsilon() * (std::abs(level) + diagonal);
             if(c[k] == *it || !(std::abs(CGAL::to_double(c[k]) - level) <= tolerance)) continue;

@@ -13,11 +13,43 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <set>
 #include <vector>
 
 namespace CGAL {
 namespace Bubble_mesh_3 {
+
+namespace internal {
+
+// per patch and axis (x, y, z), the coordinates that all three points of one
+// of the patch's triangles share: the patch's axis planes
+template <class GeomTraits>
+std::vector<std::array<std::set<typename GeomTraits::FT>, 3> >
+patch_axis_planes(const Geological_model_3<GeomTraits>& model)
+{
+  std::vector<std::array<std::set<typename GeomTraits::FT>, 3> > planes(model.number_of_patches());
+  for(std::size_t t = 0; t < model.number_of_triangles(); ++t)
+  {
+    const auto& tri = model.triangle(t);
+    for(int k = 0; k < 3; ++k)
+      if(model.point(tri[0])[k] == model.point(tri[1])[k] && model.point(tri[0])[k] == model.point(tri[2])[k])
+        planes[model.patch_of_triangle(t)][k].insert(model.point(tri[0])[k]);
+  }
+  return planes;
+}
+
+// the plane of `planes` (not empty) nearest to `c`: the first at or above it,
+// or the one below if that is nearer
+template <class FT>
+typename std::set<FT>::const_iterator nearest_axis_plane(const std::set<FT>& planes, const FT& c)
+{
+  auto it = planes.lower_bound(c);
+  if(it == planes.end() || (it != planes.begin() && c - *std::prev(it) < *it - c)) --it;
+  return it;
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgBubbleMesh3Ref
@@ -57,14 +89,7 @@ Axis_plane_snap_report snap_points_to_axis_planes(Geological_model_3<GeomTraits>
   typedef typename GeomTraits::Point_3 Point_3;
   Axis_plane_snap_report report;
   const std::size_t nt = model.number_of_triangles();
-  std::vector<std::array<std::set<FT>, 3> > levels(model.number_of_patches());
-  for(std::size_t t = 0; t < nt; ++t)
-  {
-    const auto& tri = model.triangle(t);
-    for(int k = 0; k < 3; ++k)
-      if(model.point(tri[0])[k] == model.point(tri[1])[k] && model.point(tri[0])[k] == model.point(tri[2])[k])
-        levels[model.patch_of_triangle(t)][k].insert(model.point(tri[0])[k]);
-  }
+  const std::vector<std::array<std::set<FT>, 3> > levels = internal::patch_axis_planes(model);
   const double tolerance = internal::coplanarity_tolerance(model);
 
   // the coordinate each point is to take, per axis (a point of several walls
@@ -78,8 +103,7 @@ Axis_plane_snap_report snap_points_to_axis_planes(Geological_model_3<GeomTraits>
       const std::set<FT>& planes = levels[model.patch_of_triangle(t)][k];
       if(planes.empty()) continue;
       const FT& c = model.point(tri[0])[k];
-      auto it = planes.lower_bound(c);
-      if(it == planes.end() || (it != planes.begin() && c - *std::prev(it) < *it - c)) --it;
+      const auto it = internal::nearest_axis_plane(planes, c);
       bool near = true;
       for(std::size_t v : tri) near = near && std::abs(CGAL::to_double(model.point(v)[k] - *it)) <= tolerance;
       if(!near) continue;
