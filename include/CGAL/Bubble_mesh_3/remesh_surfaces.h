@@ -116,7 +116,8 @@ struct Surface_remeshing_report
   /// the farthest one of them went (summed over the steps), over its local target size
   double largest_volume_balancing_move = 0.;
   /// regions left out of the balancing because slides could not give their
-  /// volume back (a convex body faceted coarsely, whose chords all cut into it)
+  /// volume back (a convex body faceted coarsely, whose chords all cut into
+  /// it, or a region none of whose points may move)
   std::size_t number_of_regions_not_balanced = 0;
   /// patches re-meshed again with every crease kept as a curve, so that the
   /// regions they bound keep their volume (those regions could not be
@@ -807,7 +808,9 @@ private:
     // tunnel, a dome) cannot get its volume back by slides, only lose less of
     // it by points crowding onto its creases, at the cost of the mesh there.
     // Such regions are left out and the others balanced again from the
-    // chords; after three failures no point moves.
+    // chords; after three failures no point moves. A region none of whose
+    // points may move is left out at once, without a new attempt: the
+    // balance already left it as it is.
     const double converged = 1e-7;
     const std::vector<Point_3> chords = out_points_;
     std::vector<char> fixed = out_fixed_;
@@ -821,10 +824,13 @@ private:
       balance = balance_region_volumes(out_points_, patch_out_, fixed, sides, target, balanced, box_centre(in_),
                                        project, size, set_.angle_bound);
       if(attempt == 0) report_.volume_error_before_balancing = balance.error_before;
-      if(balance.error_after <= converged) break;
+      // a region none of whose points may move is left out as it is (unless its volume is right)
+      for(std::size_t r = 1; r < balanced.size(); ++r)
+        if(balance.immovable[r] && balance.relative_errors[r] > converged) balanced[r] = 0;
+      if(balance.residual_after <= converged) break;
       out_points_ = chords;
       for(std::size_t r = 1; r < balanced.size(); ++r)
-        if(attempt == 2 || balance.relative_errors[r] > converged) balanced[r] = 0;
+        if(attempt == 2 || balance.residual_errors[r] > converged) balanced[r] = 0;
       balance = Volume_balance_result();
       if(attempt == 2) break;
     }
@@ -1201,7 +1207,9 @@ and no more triangles fall under the angle bound less 5 degrees
 fault-and-tunnel model's tunnel goes from 1.9e-2 to 2.4e-8, a salt dome from
 2.0e-2 to 3e-14, each with twice the tetrahedra. Regions neither way
 reaches are left as the chords make them
-(`Surface_remeshing_report::number_of_regions_not_balanced`).
+(`Surface_remeshing_report::number_of_regions_not_balanced`), and so is a
+region none of whose points may move; where the outer walls are flat, what
+it lost went to the others, which share it in proportion to their volumes.
 The balance is off by default: the tetrahedra keep every median with it, but
 the single smallest dihedral angle, on a needle facet in a fault strip, moves
 either way (CloudSpin 0.0103 -> 0.0012, modelA5 0.40 -> 0.83).

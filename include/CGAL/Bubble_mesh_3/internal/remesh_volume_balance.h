@@ -20,14 +20,17 @@
 // stays what the size allows; what is kept is each region's volume, that is,
 // its weight in a stability analysis. Curve points do not move, so the curves
 // keep their distance to the input polylines, nor do the points near curves
-// and near poor triangles (see `frozen` below). A step that makes no region
-// better is undone and ends the iteration (where the patches lie flat the
+// and near poor triangles (see `frozen` below). Each region aims at what it
+// can reach (see `reach` below: where the outer walls are flat, the regions
+// share what a region no point can change lost). A step that brings no region
+// nearer is undone and ends the iteration (where the patches lie flat the
 // solve has nothing to hold on to). `remesh_surfaces()` runs it on
 // request (`keep_region_volumes(true)`): it keeps every median of the
 // tetrahedra but moves the single worst cell either way (bench/README.md,
 // session 57).
 
 #include <CGAL/Bubble_mesh_3/internal/centred_coordinates.h>
+#include <CGAL/Bubble_mesh_3/internal/union_find.h>
 #include <CGAL/Bubble_mesh_3/internal/vertex_angle.h>
 
 #include <algorithm>
@@ -50,12 +53,15 @@ struct Volume_balance_result
   std::size_t moved_points = 0;   // free points that moved
   double largest_move = 0.;       // largest distance a point moved, over its local size
   std::vector<double> relative_errors; // |volume - target| / |target| of each region at the end (entry 0: 0)
+  // the same against what the region can reach (below), and the largest of them
+  std::vector<double> residual_errors;
+  double residual_after = 0.;
+  std::vector<char> immovable;         // regions none of whose points may move
 };
 
 // Solves `m x = b` (n x n, symmetric positive semi-definite) by Gaussian
 // elimination with partial pivoting; a pivot under `floor` (a region whose
-// volume no free point can change, or the null direction of a model whose
-// outer boundary is flat) leaves its unknown at 0.
+// volume no free point can change) leaves its unknown at 0.
 inline std::vector<double> solve_small_system(std::vector<std::vector<double> > m, std::vector<double> b, double floor)
 {
   const std::size_t n = b.size();
@@ -179,15 +185,26 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
     }
     return vol;
   };
-  auto relative_error = [&](const std::vector<double>& vol, std::size_t r) {
-    return target[r] != 0. ? std::abs(vol[r] - target[r]) / std::abs(target[r]) : 0.;
+  // What each region can reach. Regions linked by free points form groups; a
+  // group that no free point links to the outside (a model whose outer walls
+  // are flat) keeps its total volume whatever the slides, and its targets may
+  // not add up to it: a region none of whose points may move (a coarse lens
+  // between curves and needles, bench/make_graben_model.py) keeps what its
+  // chords cut off, and that volume went to its neighbours. What the group's
+  // targets miss is shared among its regions in proportion to their volumes,
+  // so that none is off by more than needed and none holds back the others.
+  std::vector<double> reach(target.begin(), target.end());
+  // |volume - aim| / |target| of region r, and the largest over the balanced regions
+  auto relative_error = [&](const std::vector<double>& vol, std::size_t r, const std::vector<double>& aim) {
+    return target[r] != 0. ? std::abs(vol[r] - aim[r]) / std::abs(target[r]) : 0.;
   };
-  auto worst_error = [&](const std::vector<double>& vol) {
+  auto worst_error = [&](const std::vector<double>& vol, const std::vector<double>& aim) {
     double e = 0.;
     for(std::size_t r = 1; r < n; ++r)
-      if(balanced[r]) e = (std::max)(e, relative_error(vol, r));
+      if(balanced[r]) e = (std::max)(e, relative_error(vol, r, aim));
     return e;
   };
+  result.immovable.assign(n, 0);
   auto fan_min_angle = [&](std::size_t v) {
     double a = 180.;
     for(std::size_t t : around[v])
@@ -204,10 +221,10 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
   };
 
   std::vector<double> vol = volumes();
-  result.error_before = result.error_after = worst_error(vol);
+  result.error_before = result.error_after = result.residual_after = worst_error(vol, target);
   std::vector<Vec> gradient(points.size());
   std::vector<double> moved(points.size(), 0.);
-  for(; result.iterations < max_iterations && result.error_after > tolerance; ++result.iterations)
+  for(; result.iterations < max_iterations; ++result.iterations)
   {
     // d(volume of the negative side)/d(point), within the input triangle's
     // plane: a third of the fan's area vector (the fan is closed around a
@@ -234,18 +251,52 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
       m[a][b] -= c;
       m[b][a] -= c;
     }
-    // the outside (region 0) is not kept: its row and column go
-    std::vector<std::vector<double> > m1(n - 1, std::vector<double>(n - 1, 0.));
-    std::vector<double> rhs(n - 1, 0.);
     double largest = 0.;
+    for(std::size_t r = 1; r < n; ++r) largest = (std::max)(largest, m[r][r]);
+    if(!(largest > 0.)) break;
+    const double link = 1e-12 * largest;
+    std::vector<std::size_t> group = uf_singletons(n);
+    for(std::size_t a = 0; a < n; ++a)
+      for(std::size_t b = a + 1; b < n; ++b)
+        if(std::abs(m[a][b]) > link) uf_union(group, a, b);
+    std::vector<double> missed(n, 0.), weight(n, 0.);
+    std::vector<std::size_t> anchor(n, 0);
     for(std::size_t r = 1; r < n; ++r)
     {
-      rhs[r - 1] = balanced[r] ? target[r] - vol[r] : 0.;
-      for(std::size_t s = 1; s < n; ++s) m1[r - 1][s - 1] = m[r][s];
-      largest = (std::max)(largest, m[r][r]);
+      result.immovable[r] = balanced[r] && !(m[r][r] > link);
+      if(!balanced[r]) continue;
+      const std::size_t g = uf_find(group, r);
+      missed[g] += target[r] - vol[r];
+      weight[g] += std::abs(target[r]);
+      if(anchor[g] == 0 || m[r][r] > m[anchor[g]][anchor[g]]) anchor[g] = r;
     }
-    if(!(largest > 0.)) break;
-    const std::vector<double> lambda1 = solve_small_system(m1, rhs, 1e-12 * largest);
+    const std::size_t outside = uf_find(group, 0);
+    for(std::size_t r = 1; r < n; ++r)
+    {
+      const std::size_t g = uf_find(group, r);
+      reach[r] = (!balanced[r] || g == outside || !(weight[g] > 0.)) ? target[r]
+                                                                       : target[r] - missed[g] * std::abs(target[r]) / weight[g];
+    }
+    const double residual_before = worst_error(vol, reach);
+    result.residual_after = residual_before;
+    if(!(residual_before > tolerance)) break;
+    // the outside (region 0) is not kept: its row and column go; a group apart
+    // from it has its anchor's multiplier at 0 (only differences move points)
+    std::vector<std::vector<double> > m1(n - 1, std::vector<double>(n - 1, 0.));
+    std::vector<double> rhs(n - 1, 0.);
+    for(std::size_t r = 1; r < n; ++r)
+    {
+      const std::size_t g = uf_find(group, r);
+      if(g != outside && anchor[g] == r)
+      {
+        m1[r - 1][r - 1] = 1.;
+        continue;
+      }
+      rhs[r - 1] = balanced[r] ? reach[r] - vol[r] : 0.;
+      for(std::size_t s = 1; s < n; ++s)
+        if(!(uf_find(group, s) != outside && anchor[uf_find(group, s)] == s)) m1[r - 1][s - 1] = m[r][s];
+    }
+    const std::vector<double> lambda1 = solve_small_system(m1, rhs, link);
     std::vector<double> lambda(n, 0.);
     for(std::size_t r = 1; r < n; ++r) lambda[r] = lambda1[r - 1];
 
@@ -291,10 +342,11 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
       ++moves;
     }
     const std::vector<double> vol_after = volumes();
-    // A step that makes no region better is undone, and the balance ends: where the
-    // patches lie flat (a faceted body's, between its kept creases) slides change no
-    // volume, and the solve's steps there would only wander
-    if(!(worst_error(vol_after) < result.error_after))
+    // A step that brings no region nearer what it can reach is undone, and the
+    // balance ends: where the patches lie flat (a faceted body's, between its
+    // kept creases) slides change no volume, and the solve's steps there would
+    // only wander
+    if(!(worst_error(vol_after, reach) < residual_before))
     {
       points = before_step;
       normal = normals_before_step;
@@ -302,11 +354,17 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
       break;
     }
     vol = vol_after;
-    result.error_after = worst_error(vol);
+    result.error_after = worst_error(vol, target);
+    result.residual_after = worst_error(vol, reach);
     if(moves == 0) break;
   }
   result.relative_errors.assign(n, 0.);
-  for(std::size_t r = 1; r < n; ++r) result.relative_errors[r] = relative_error(vol, r);
+  result.residual_errors.assign(n, 0.);
+  for(std::size_t r = 1; r < n; ++r)
+  {
+    result.relative_errors[r] = relative_error(vol, r, target);
+    result.residual_errors[r] = relative_error(vol, r, reach);
+  }
   for(std::size_t v : free_points)
     if(moved[v] > 0.)
     {
