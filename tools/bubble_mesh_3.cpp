@@ -871,7 +871,18 @@ int main(int argc, char** argv)
         std::cout << " (" << rr.volume_error_before_balancing << " before " << rr.number_of_volume_balancing_points
                   << " points slid along the input surfaces)";
       if(rr.number_of_regions_not_balanced > 0 && opt.balance_volumes)
-        std::cout << " (" << rr.number_of_regions_not_balanced << " regions left out of the volume balance)";
+      {
+        // what the balance gave the others: the largest change alone would read as if it failed everywhere
+        double others = 0.;
+        for(std::size_t r = 1; r < rr.input_volumes.size() && r < rr.output_volumes.size(); ++r)
+          if(rr.input_volumes[r] != 0. &&
+             !std::binary_search(rr.regions_not_balanced.begin(), rr.regions_not_balanced.end(), r))
+            others = (std::max)(others, std::abs(rr.output_volumes[r] - rr.input_volumes[r]) / std::abs(rr.input_volumes[r]));
+        const std::size_t left = rr.number_of_regions_not_balanced;
+        std::cout << " (" << left << (left == 1 ? " region" : " regions") << " left out of the volume balance";
+        if(left + 1 < rr.input_volumes.size()) std::cout << "; the others changed by at most " << others;
+        std::cout << ")";
+      }
       if(rr.number_of_faceted_patches > 0)
         std::cout << " (" << rr.number_of_faceted_patches << " surfaces of convex, coarsely faceted bodies re-meshed "
                   << "with every crease kept, as slides could not give those bodies their volume back)";

@@ -119,6 +119,7 @@ struct Surface_remeshing_report
   /// volume back (a convex body faceted coarsely, whose chords all cut into
   /// it, or a region none of whose points may move)
   std::size_t number_of_regions_not_balanced = 0;
+  std::vector<std::size_t> regions_not_balanced; ///< those regions, in increasing order
   /// patches re-meshed again with every crease kept as a curve, so that the
   /// regions they bound keep their volume (those regions could not be
   /// balanced: 0 unless `keep_region_volumes`)
@@ -841,6 +842,7 @@ private:
     for(std::size_t r = 1; r < balanced.size(); ++r)
       if(!balanced[r]) not_balanced_.push_back(r);
     report_.number_of_regions_not_balanced = not_balanced_.size();
+    report_.regions_not_balanced = not_balanced_;
     report_.time_volume_balance = timer.time();
   }
 
