@@ -271,6 +271,11 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
       if(anchor[g] == 0 || m[r][r] > m[anchor[g]][anchor[g]]) anchor[g] = r;
     }
     const std::size_t outside = uf_find(group, 0);
+    // the region whose multiplier is 0 in a group apart from the outside
+    auto is_anchor = [&](std::size_t r) {
+      const std::size_t g = uf_find(group, r);
+      return g != outside && anchor[g] == r;
+    };
     for(std::size_t r = 1; r < n; ++r)
     {
       const std::size_t g = uf_find(group, r);
@@ -286,15 +291,14 @@ Volume_balance_result balance_region_volumes(std::vector<Point_3>& points,
     std::vector<double> rhs(n - 1, 0.);
     for(std::size_t r = 1; r < n; ++r)
     {
-      const std::size_t g = uf_find(group, r);
-      if(g != outside && anchor[g] == r)
+      if(is_anchor(r))
       {
         m1[r - 1][r - 1] = 1.;
         continue;
       }
       rhs[r - 1] = balanced[r] ? reach[r] - vol[r] : 0.;
       for(std::size_t s = 1; s < n; ++s)
-        if(!(uf_find(group, s) != outside && anchor[uf_find(group, s)] == s)) m1[r - 1][s - 1] = m[r][s];
+        if(!is_anchor(s)) m1[r - 1][s - 1] = m[r][s];
     }
     const std::vector<double> lambda1 = solve_small_system(m1, rhs, link);
     std::vector<double> lambda(n, 0.);
