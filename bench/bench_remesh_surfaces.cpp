@@ -10,7 +10,7 @@
 //
 // Usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--balance-volumes] MODEL [MODEL ...]
 //   (default: the bundled model and every ../shared/data/geomodels model of issue 9)
-//   --details  also lists the triangles under 25 degrees that no input corner forces,
+//   --details  also lists the triangles under 25 degrees outside the wedges of sharp input corners,
 //              and the validation problems of an invalid output
 //   --refine-ribbons  the sizing field's ribbon rule (refine_ribbons(true))
 //   --balance-volumes  slide the free points until every region has its input volume (keep_region_volumes(true))
@@ -29,6 +29,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -81,19 +82,31 @@ double diagonal(const Model& m)
 
 void details(const Model& output, const BM::Surface_remeshing_report& r, const BM::Remeshing_sizing_field<K>& field)
 {
-  // the triangles under the bound, worst first (forced ones are counted by the report, not listed apart)
+  // the triangles under the bound outside the wedges of sharp input corners, worst first
   std::vector<std::pair<double, std::size_t> > small;
-  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+  for(std::size_t t : r.small_angle_triangles_outside_sharp_wedges)
   {
     const auto& tri = output.triangle(t);
-    const double a = BM::internal::min_angle_degrees(output.point(tri[0]), output.point(tri[1]), output.point(tri[2]));
-    if(a < r.angle_bound) small.push_back(std::make_pair(a, t));
+    small.push_back(std::make_pair(
+      BM::internal::min_angle_degrees(output.point(tri[0]), output.point(tri[1]), output.point(tri[2])), t));
   }
   std::sort(small.begin(), small.end());
-  std::cout << "    of the " << small.size() << " triangles under " << r.angle_bound << " deg, "
+  std::map<std::size_t, std::pair<std::size_t, double> > by_patch; // patch -> (count, worst angle)
+  for(const auto& a : small)
+  {
+    auto& c = by_patch.insert(std::make_pair(output.patch_of_triangle(a.second), std::make_pair(0, a.first))).first->second;
+    ++c.first;
+  }
+  std::cout << "    of the " << r.number_of_small_angle_triangles << " triangles under " << r.angle_bound << " deg, "
             << r.number_of_small_angle_triangles_between_curve_points
-            << " have their three points on curves (the curve sampling sets them)\n";
-  std::cout << "    triangles under " << r.angle_bound << " deg, worst first (angle, patch, centroid, edge lengths, "
+            << " have their three points on curves (the curve sampling sets them), "
+            << r.number_of_small_angle_triangles_in_sharp_wedges << " lie in the wedge of an input corner under "
+            << r.angle_bound << " deg\n";
+  std::cout << "    outside those wedges, by patch (triangles, smallest angle):";
+  for(const auto& c : by_patch)
+    std::cout << " " << output.patch(c.first).name << " " << c.second.first << " (" << c.second.second << ")";
+  std::cout << "\n";
+  std::cout << "    triangles under " << r.angle_bound << " deg outside those wedges, worst first (angle, patch, centroid, edge lengths, "
             << "target at the centroid; the field's floor is " << field.minimum_size() << "):\n";
   for(std::size_t i = 0; i < small.size() && i < 40; ++i)
   {

@@ -863,6 +863,8 @@ int main(int argc, char** argv)
                 << " triangles, min angle " << rr.input_min_angle << " -> " << rr.min_angle << " deg ("
                 << rr.number_of_small_angle_triangles << " triangles under " << rr.angle_bound << " deg, "
                 << rr.number_of_forced_small_angle_triangles << " of them forced by input corners, "
+                << rr.number_of_small_angle_triangles_in_sharp_wedges << " in the wedges of input corners under "
+                << rr.angle_bound << " deg, "
                 << rr.number_of_small_angle_triangles_between_curve_points << " between three curve points), edges within "
                 << "[0.5, 1.5] of the target " << 100. * rr.input_share_of_edges_within_size
                 << " -> " << 100. * rr.share_of_edges_within_size << " %, largest region volume change "

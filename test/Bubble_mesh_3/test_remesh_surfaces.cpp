@@ -522,6 +522,19 @@ void check_remeshed(const Model& input, const Model& output, const BM::Surface_r
   std::cout << "    min angle " << smallest << ", " << small << " triangles under 25 deg (" << r.number_of_forced_small_angle_triangles
             << " forced by input corners)\n";
   assert(small == r.number_of_small_angle_triangles);
+  // the forced ones lie in the wedges of their corners; the rest are listed (the first ten printed)
+  std::cout << "    " << r.number_of_small_angle_triangles_in_sharp_wedges << " in the wedges of sharp input corners\n";
+  assert(r.number_of_small_angle_triangles_in_sharp_wedges >= r.number_of_forced_small_angle_triangles);
+  assert(r.number_of_small_angle_triangles_in_sharp_wedges + r.small_angle_triangles_outside_sharp_wedges.size() == small);
+  for(std::size_t i = 0; i < r.small_angle_triangles_outside_sharp_wedges.size(); ++i)
+  {
+    const std::size_t t = r.small_angle_triangles_outside_sharp_wedges[i];
+    const auto& tri = output.triangle(t);
+    if(i < 10)
+      std::cout << "      outside them: " << min_angle(output, t) << " on " << output.patch(output.patch_of_triangle(t)).name
+                << " at " << output.point(tri[0]) << ", " << output.point(tri[1]) << ", " << output.point(tri[2]) << "\n";
+    assert(min_angle(output, t) < 25.);
+  }
   if(strict_angles) assert(small == r.number_of_forced_small_angle_triangles);
   // of those, the ones between three points of the output's curves
   const BM::Model_features out_features = BM::detect_model_features(output);
@@ -911,6 +924,25 @@ void test_ribbon()
   }
   std::cout << "  strip: " << in_strip << " triangles, smallest angle where x > 2: " << worst << "\n";
   assert(worst >= 20.);
+  // the triangles under 25 degrees are those of the strip with their three
+  // points on its two sides (o e and o s), in the wedge of the corner o
+  auto on_sides = [&](const Point& q) {
+    return CGAL::squared_distance(q, K::Segment_3(o, e)) < 1e-20 || CGAL::squared_distance(q, K::Segment_3(o, s)) < 1e-20;
+  };
+  std::size_t small = 0, spanning = 0;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+  {
+    if(!(min_angle(output, t) < 25.)) continue;
+    ++small;
+    const auto& tri = output.triangle(t);
+    if(output.patch_of_triangle(t) == strip && on_sides(output.point(tri[0])) && on_sides(output.point(tri[1])) &&
+       on_sides(output.point(tri[2])))
+      ++spanning;
+  }
+  std::cout << "  " << small << " triangles under 25 degrees, " << spanning << " spanning the wedge, "
+            << r.number_of_small_angle_triangles_in_sharp_wedges << " in it by the report\n";
+  assert(spanning > 0 && spanning == small);
+  assert(r.number_of_small_angle_triangles_in_sharp_wedges == spanning);
 }
 
 // A free vertex crowded against a curve edge: a hexagon of fixed points
@@ -979,11 +1011,21 @@ void test_collapse_crowded_vertex()
 // - 0.1 thick: at the floor even those would be 17 degrees; the strip's
 //   sides are sampled at 3.5 times its width instead (the sizing field's
 //   strip rule), and the half-way points make triangles of 30 degrees.
-void test_thin_layer_sides(double thickness)
+//
+// With `widening`, the layer's top rises by that much per unit of x: a
+// strip whose width, and so the strip rule's size, grows along its sides.
+// 0.02 thick, widening 0.02: the sizes go from 0.07 (a ninth of the floor) to
+// the floor at x = 7.6; each side is one curve piece, and its points go
+// half-way between the other's at the local spacing.
+void test_thin_layer_sides(double thickness, double widening = 0.)
 {
-  std::cout << "a layer " << thickness << " thick meeting the walls, with a floor of 0.6\n";
+  std::cout << "a layer " << thickness << " thick";
+  if(widening > 0.) std::cout << ", widening by " << widening << " per unit";
+  std::cout << ", meeting the walls, with a floor of 0.6\n";
   Builder b;
   const double z[4] = {0., 3., 3. + thickness, 6.};
+  // the z of boundary r (0 to 3) at x
+  auto z_at = [&](int r, double x) { return r == 2 ? z[2] + widening * x : z[r]; };
   const std::size_t regions[3] = {b.model.add_region("lower"), b.model.add_region("layer"), b.model.add_region("upper")};
   const std::size_t base = b.model.add_patch("base", 0, regions[0]), roof = b.model.add_patch("roof", 0, regions[2]);
   b.rectangle(base, Point(0, 0, 0), Point(10, 0, 0), Point(10, 8, 0), Point(0, 8, 0), Vector(0, 0, -1));
@@ -994,15 +1036,16 @@ void test_thin_layer_sides(double thickness)
     if(r > 0)
     {
       const std::size_t h = b.model.add_patch("h" + std::to_string(r), regions[r], regions[r - 1]);
-      b.rectangle(h, Point(0, 0, z[r]), Point(10, 0, z[r]), Point(10, 8, z[r]), Point(0, 8, z[r]), Vector(0, 0, 1));
+      b.rectangle(h, Point(0, 0, z_at(r, 0)), Point(10, 0, z_at(r, 10)), Point(10, 8, z_at(r, 10)), Point(0, 8, z_at(r, 0)),
+                  Vector(0, 0, 1));
     }
     const std::size_t side = b.model.add_patch("sides" + std::to_string(r), 0, regions[r]);
     if(r == 1) layer_sides = side;
-    const double lo = z[r], hi = z[r + 1];
-    b.rectangle(side, Point(0, 0, lo), Point(10, 0, lo), Point(10, 0, hi), Point(0, 0, hi), Vector(0, -1, 0));
-    b.rectangle(side, Point(10, 0, lo), Point(10, 8, lo), Point(10, 8, hi), Point(10, 0, hi), Vector(1, 0, 0));
-    b.rectangle(side, Point(10, 8, lo), Point(0, 8, lo), Point(0, 8, hi), Point(10, 8, hi), Vector(0, 1, 0));
-    b.rectangle(side, Point(0, 8, lo), Point(0, 0, lo), Point(0, 0, hi), Point(0, 8, hi), Vector(-1, 0, 0));
+    const double lo0 = z_at(r, 0), lo10 = z_at(r, 10), hi0 = z_at(r + 1, 0), hi10 = z_at(r + 1, 10);
+    b.rectangle(side, Point(0, 0, lo0), Point(10, 0, lo10), Point(10, 0, hi10), Point(0, 0, hi0), Vector(0, -1, 0));
+    b.rectangle(side, Point(10, 0, lo10), Point(10, 8, lo10), Point(10, 8, hi10), Point(10, 0, hi10), Vector(1, 0, 0));
+    b.rectangle(side, Point(10, 8, lo10), Point(0, 8, lo0), Point(0, 8, hi0), Point(10, 8, hi10), Vector(0, 1, 0));
+    b.rectangle(side, Point(0, 8, lo0), Point(0, 0, lo0), Point(0, 0, hi0), Point(0, 8, hi0), Vector(-1, 0, 0));
   }
   const Model& input = b.model;
   BM::validate_geological_model(input);
@@ -1019,6 +1062,12 @@ void test_thin_layer_sides(double thickness)
     {
       ++on_sides;
       worst = (std::min)(worst, min_angle(output, t));
+      if(min_angle(output, t) < 25.)
+      {
+        const auto& tri = output.triangle(t);
+        std::cout << "      under 25 degrees: " << min_angle(output, t) << " at " << output.point(tri[0]) << ", "
+                  << output.point(tri[1]) << ", " << output.point(tri[2]) << "\n";
+      }
     }
   std::cout << "    layer's sides: " << on_sides << " triangles, smallest angle " << worst << "\n";
   assert(on_sides > 100 && worst >= 25.);
@@ -1080,6 +1129,7 @@ int main(int argc, char** argv)
   test_collapse_crowded_vertex();
   test_thin_layer_sides(0.2);
   test_thin_layer_sides(0.1);
+  test_thin_layer_sides(0.02, 0.02);
   test_real_models(std::vector<std::string>(argv + 1, argv + argc));
   std::cout << "all remesh_surfaces checks passed\n";
   return EXIT_SUCCESS;

@@ -91,6 +91,17 @@ struct Surface_remeshing_report
   /// horizon cut lines), and no flip, move or collapse of the patch's points
   /// can change them
   std::size_t number_of_small_angle_triangles_between_curve_points = 0;
+  /// of the triangles under the bound, those in the wedge of an input corner
+  /// whose own angle is under the bound: the forced ones, and those whose three
+  /// points lie on the corner's two curves, followed from the corner to where
+  /// another curve meets them or they turn back (a fault lens between its
+  /// tips, a layer pinching out on a wall). Such a wedge is narrower than any
+  /// triangle of 25 degrees at the sizing field's floor over a length that
+  /// grows as the corner's angle shrinks
+  std::size_t number_of_small_angle_triangles_in_sharp_wedges = 0;
+  /// the other triangles under the bound (output triangle indices): the ones
+  /// the input does not explain
+  std::vector<std::size_t> small_angle_triangles_outside_sharp_wedges;
   double share_of_small_angle_triangles = 0.; ///< output triangles with an angle under the bound, share
   double share_of_edges_within_size = 0.;     ///< output edges with length in [0.5, 1.5] of the target there
   double input_share_of_edges_within_size = 0.; ///< the same for the input edges and the same targets
@@ -435,7 +446,11 @@ private:
   the partner's points at such a width from the piece follow each other at
   most two spacings apart (three or more, or all along the piece), the
   piece's samples there go half-way between them
-  (interleave_polyline_samples()). The partner's points must stay where
+  (interleave_polyline_samples()). A strip narrows and widens along its
+  sides, and the strip rule grades their spacing with it: s is the
+  partner's own gap about each of its points, not a mean over the piece
+  (which had CloudSpin's squeezed layer, sampled from 0.6 to 8, left
+  facing). The partner's points must stay where
   they are: kept points, or samples of a line before this one that was not
   moved, so that of two sides of a strip one moves.
   */
@@ -486,14 +501,26 @@ private:
         const std::vector<Point_3>& x = positions[l][k];
         const std::size_t m = x.size() - 2;
         if(m == 0) continue;
-        const double length = Polyline_arc_length<Point_3>(pts, piece.first, piece.last).total();
-        const double spacing = length / double(m + 1);
+        const Polyline_arc_length<Point_3> arc(pts, piece.first, piece.last);
+        const double length = arc.total();
+        // the samples' arc lengths, and the spacing about an arc length: the
+        // gap between the samples around it (a strip's sides are graded along
+        // it, as the strip narrows and widens)
+        std::vector<double> at(1, 0.);
+        for(const Polyline_position& p : piece.samples) at.push_back(arc.arc_length_at(p));
+        at.push_back(length);
+        auto spacing_at = [&](double a) {
+          const std::size_t g = std::size_t((std::min)(
+            std::ptrdiff_t(at.size()) - 2,
+            (std::max)(std::ptrdiff_t(0), std::ptrdiff_t(std::upper_bound(at.begin(), at.end(), a) - at.begin()) - 1)));
+          return at[g + 1] - at[g];
+        };
         // the points of other curves of a common patch near the samples, that stay where they are
         std::vector<std::size_t> near;
         std::map<std::size_t, std::size_t> samples_near; // other line -> samples with a point of it near
         for(std::size_t j = 1; j <= m; ++j)
         {
-          tree.points_in_ball(x[j], spacing, found);
+          tree.points_in_ball(x[j], (std::max)(at[j] - at[j - 1], at[j + 1] - at[j]), found);
           std::set<std::size_t> lines_here;
           for(std::size_t q : found)
           {
@@ -516,24 +543,40 @@ private:
         for(std::size_t q : near)
           if(owner_line[q] == partner) facing.push_back(points[q]);
         // across the strip, away from the piece's ends (a point near an end is
-        // the other side's corner, or would leave a tiny edge there)
-        std::vector<double> arcs;
-        for(const std::pair<double, double>& a : project_on_polyline(pts, piece.first, piece.last, facing))
-          if(a.second >= 0.5 * t * spacing && a.second < t * spacing && a.first > 0.6 * spacing &&
-             a.first < length - 0.6 * spacing)
-            arcs.push_back(a.first);
-        std::sort(arcs.begin(), arcs.end());
+        // the other side's corner, or would leave a tiny edge there); the
+        // spacing about a facing point is the partner's own, the mean gap to
+        // its neighbours (the partner's sides are graded along a strip that
+        // narrows and widens)
+        std::vector<std::pair<double, double> > across = project_on_polyline(pts, piece.first, piece.last, facing);
+        std::sort(across.begin(), across.end());
+        std::vector<double> arcs, spacings;
+        for(std::size_t i = 0; i < across.size(); ++i)
+        {
+          double s = 0., gaps = 0.;
+          if(i > 0) { s += across[i].first - across[i - 1].first; ++gaps; }
+          if(i + 1 < across.size()) { s += across[i + 1].first - across[i].first; ++gaps; }
+          s = gaps > 0. ? s / gaps : spacing_at(across[i].first);
+          const double a = across[i].first, w = across[i].second;
+          if(w >= 0.5 * t * s && w < t * s && a > 0.6 * s && a < length - 0.6 * s)
+          {
+            arcs.push_back(a);
+            spacings.push_back(s);
+          }
+        }
         // runs of points at most two spacings apart: where the strip runs along the piece
         for(std::size_t i = 0; i < arcs.size();)
         {
           std::size_t j = i + 1;
-          while(j < arcs.size() && arcs[j] - arcs[j - 1] <= 2. * spacing) ++j;
+          while(j < arcs.size() && arcs[j] - arcs[j - 1] <= 2. * spacings[j - 1]) ++j;
           const std::vector<double> run(arcs.begin() + std::ptrdiff_t(i), arcs.begin() + std::ptrdiff_t(j));
-          const bool whole = run.front() <= 2. * spacing && length - run.back() <= 2. * spacing;
+          const double s_front = spacings[i], s_back = spacings[j - 1];
+          const bool whole = run.front() <= 2. * s_front && length - run.back() <= 2. * s_back;
           if(run.size() >= 3 || whole)
           {
-            pieces[l][k].samples =
-              interleave_polyline_samples(pts, piece.first, piece.last, pieces[l][k].samples, run, spacing);
+            // (the samples kept around the run at the smaller of the two sides' spacings there)
+            pieces[l][k].samples = interleave_polyline_samples(
+              pts, piece.first, piece.last, pieces[l][k].samples, run,
+              0.75 * (std::min)(s_front, spacing_at(run.front())), 0.75 * (std::min)(s_back, spacing_at(run.back())));
             moved[l][k] = 1;
           }
           i = j;
@@ -952,6 +995,84 @@ private:
   std::vector<std::vector<Triangle> > patch_out_;
 };
 
+// an output curve point where a patch's sector between two curve edges is
+// under the angle bound, with the other ends of those edges
+struct Sharp_sector
+{
+  std::size_t tip, patch, side0, side1;
+};
+
+// The triangles (sorted) of a sharp sector's patch whose three points lie on
+// the sector's wedge: its tip and its two sides, each followed along the
+// curve from the tip until a point where other curves meet it, or where it
+// turns back (the other tip of a lens), with a point on each side.
+template <class GeomTraits>
+std::vector<std::size_t> triangles_in_sharp_wedges(const Geological_model_3<GeomTraits>& output,
+                                                   const Edge_set& curve_edges,
+                                                   const std::vector<Sharp_sector>& sectors)
+{
+  if(sectors.empty()) return std::vector<std::size_t>();
+  std::map<std::size_t, std::vector<std::size_t> > next; // curve point -> its curve neighbours
+  for(const auto& e : curve_edges)
+  {
+    next[e.first.first].push_back(e.first.second);
+    next[e.first.second].push_back(e.first.first);
+  }
+  // (point, wedge) -> 0 at the tip, 1 or 2 on a side
+  std::map<std::size_t, std::vector<std::pair<std::size_t, int> > > on_wedge;
+  for(std::size_t s = 0; s < sectors.size(); ++s)
+  {
+    const Sharp_sector& w = sectors[s];
+    on_wedge[w.tip].push_back(std::make_pair(s, 0));
+    for(int side = 1; side <= 2; ++side)
+    {
+      std::size_t prev = w.tip, cur = side == 1 ? w.side0 : w.side1;
+      std::set<std::size_t> seen{w.tip};
+      while(seen.insert(cur).second)
+      {
+        on_wedge[cur].push_back(std::make_pair(s, side));
+        const std::vector<std::size_t>& n = next[cur];
+        if(n.size() != 2) break;
+        const std::size_t after = n[0] == prev ? n[1] : n[0];
+        const auto in = output.point(cur) - output.point(prev), out = output.point(after) - output.point(cur);
+        if(in * out < 0.) break; // turns back
+        prev = cur;
+        cur = after;
+      }
+    }
+  }
+  std::vector<std::size_t> result;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+  {
+    const auto& tri = output.triangle(t);
+    const auto i0 = on_wedge.find(tri[0]);
+    if(i0 == on_wedge.end()) continue;
+    for(const auto& m0 : i0->second)
+    {
+      if(sectors[m0.first].patch != output.patch_of_triangle(t)) continue;
+      int sides = 0, found = 0;
+      for(std::size_t v : tri)
+      {
+        const auto iv = on_wedge.find(v);
+        if(iv == on_wedge.end()) break;
+        for(const auto& m : iv->second)
+          if(m.first == m0.first)
+          {
+            ++found;
+            sides |= m.second == 0 ? 3 : m.second;
+            break;
+          }
+      }
+      if(found == 3 && sides == 3)
+      {
+        result.push_back(t);
+        break;
+      }
+    }
+  }
+  return result;
+}
+
 // the measures of the report that compare the output with the input
 template <class GeomTraits>
 void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geological_model_3<GeomTraits>& output,
@@ -990,6 +1111,7 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
     for(std::size_t v : output.triangle(t))
       if(v < fixed.size() && fixed[v]) around[std::make_pair(v, output.patch_of_triangle(t))].push_back(t);
   std::map<std::pair<std::size_t, std::size_t>, double> sector; // (triangle, point) -> sector angle
+  std::vector<Sharp_sector> sharp_sectors;
   for(const auto& a : around)
   {
     const std::size_t v = a.first.first;
@@ -1020,11 +1142,27 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
       sum[find(i)] += corner_angle(ts[i], k);
     }
     for(std::size_t i = 0; i < ts.size(); ++i) sector[std::make_pair(ts[i], v)] = sum[find(i)];
+    // a sharp sector's two curve edges at v start the sides of its wedge
+    for(const auto& g : sum)
+    {
+      if(!(g.second < bound)) continue;
+      std::vector<std::size_t> starts;
+      for(std::size_t i = 0; i < ts.size(); ++i)
+        if(find(i) == g.first)
+          for(std::size_t w : output.triangle(ts[i]))
+            if(w != v && curve_edges.count(edge_key(v, w)) &&
+               std::find(starts.begin(), starts.end(), w) == starts.end())
+              starts.push_back(w);
+      if(starts.size() == 2) sharp_sectors.push_back(Sharp_sector{v, a.first.second, starts[0], starts[1]});
+    }
   }
+  const std::vector<std::size_t> in_sharp_wedge = triangles_in_sharp_wedges(output, curve_edges, sharp_sectors);
   report.min_angle = 180.;
   report.number_of_small_angle_triangles = 0;
   report.number_of_forced_small_angle_triangles = 0;
   report.number_of_small_angle_triangles_between_curve_points = 0;
+  report.number_of_small_angle_triangles_in_sharp_wedges = 0;
+  report.small_angle_triangles_outside_sharp_wedges.clear();
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
   {
     const double a = triangle_min_angle(output, t);
@@ -1038,7 +1176,12 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
     for(int k = 1; k < 3; ++k)
       if(corner_angle(t, k) < corner_angle(t, k_min)) k_min = k;
     const auto it = sector.find(std::make_pair(t, output.triangle(t)[k_min]));
-    if(it != sector.end() && it->second < bound) ++report.number_of_forced_small_angle_triangles;
+    const bool forced = it != sector.end() && it->second < bound;
+    if(forced) ++report.number_of_forced_small_angle_triangles;
+    if(forced || std::binary_search(in_sharp_wedge.begin(), in_sharp_wedge.end(), t))
+      ++report.number_of_small_angle_triangles_in_sharp_wedges;
+    else
+      report.small_angle_triangles_outside_sharp_wedges.push_back(t);
   }
   report.share_of_small_angle_triangles =
     output.number_of_triangles() ? double(report.number_of_small_angle_triangles) / double(output.number_of_triangles())

@@ -141,10 +141,12 @@ std::vector<std::pair<double, double> > project_on_polyline(const std::vector<Po
 // `samples` of `pts[first..last]`, with those along a strip replaced by
 // points half-way between the other side's points. `facing` are the arc
 // lengths of those points projected onto the piece (sorted, at most two
-// spacings apart). The samples within a spacing of the run's ends go;
+// spacings apart). The samples within a spacing of the run's ends go
+// (`spacing_front` and `spacing_back`: a strip's sides are graded along it);
 // the new points are half-way between consecutive ones of: the last sample
 // kept before the run (or the piece's start), the run, and the first one
-// kept after it (or the piece's end). Two curves across a strip narrower than
+// kept after it (or the piece's end, unless that is nearer than a spacing).
+// Two curves across a strip narrower than
 // their spacing are sampled alike, so their points face each other and the
 // strip is cut into right triangles with an angle of atan(width / spacing),
 // 16 degrees for a 2 m layer at a spacing of 7; with one side's points
@@ -154,22 +156,31 @@ template <class Point_3>
 std::vector<Polyline_position> interleave_polyline_samples(const std::vector<Point_3>& pts, std::size_t first,
                                                            std::size_t last,
                                                            const std::vector<Polyline_position>& samples,
-                                                           const std::vector<double>& facing, double spacing)
+                                                           const std::vector<double>& facing, double spacing_front,
+                                                           double spacing_back)
 {
   const Polyline_arc_length<Point_3> arc(pts, first, last);
   std::vector<double> before, after;
   for(const Polyline_position& p : samples)
   {
     const double s = arc.arc_length_at(p);
-    if(s < facing.front() - spacing) before.push_back(s);
-    else if(s > facing.back() + spacing) after.push_back(s);
+    if(s < facing.front() - spacing_front) before.push_back(s);
+    else if(s > facing.back() + spacing_back) after.push_back(s);
   }
   std::vector<double> run(1, before.empty() ? 0. : before.back());
   run.insert(run.end(), facing.begin(), facing.end());
   run.push_back(after.empty() ? arc.total() : after.front());
   std::vector<Polyline_position> result;
   for(double s : before) result.push_back(arc.position_at(s));
-  for(std::size_t k = 0; k + 1 < run.size(); ++k) result.push_back(arc.position_at(0.5 * (run[k] + run[k + 1])));
+  for(std::size_t k = 0; k + 1 < run.size(); ++k)
+  {
+    // no point half-way to the piece's end (a corner) nearer than a spacing:
+    // it would leave an edge of under half a spacing there, against the
+    // spacing of the other curves at the corner
+    if(k == 0 && before.empty() && run[1] - run[0] < spacing_front) continue;
+    if(k + 2 == run.size() && after.empty() && run[k + 1] - run[k] < spacing_back) continue;
+    result.push_back(arc.position_at(0.5 * (run[k] + run[k + 1])));
+  }
   for(double s : after) result.push_back(arc.position_at(s));
   return result;
 }
