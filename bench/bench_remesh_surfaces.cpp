@@ -208,7 +208,8 @@ int main(int argc, char** argv)
       std::cout << "    diagonal " << diagonal(input) << ", " << r.number_of_charts << " charts ("
                 << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points
                 << " (" << r.number_of_staggered_curve_pieces << " curve pieces staggered across strips), "
-                << r.number_of_collapsed_points << " crowded points collapsed\n"
+                << r.number_of_collapsed_points << " crowded points collapsed, " << r.number_of_slid_curve_points
+                << " curve points slid\n"
                 << "    volume error before balancing " << r.volume_error_before_balancing << ", "
                 << r.number_of_volume_balancing_steps << " steps, " << r.number_of_volume_balancing_points
                 << " points moved, farthest " << r.largest_volume_balancing_move << " sizes, "

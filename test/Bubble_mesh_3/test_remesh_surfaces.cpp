@@ -1014,9 +1014,10 @@ void test_collapse_crowded_vertex()
 //
 // With `widening`, the layer's top rises by that much per unit of x: a
 // strip whose width, and so the strip rule's size, grows along its sides.
-// 0.02 thick, widening 0.02: the sizes go from 0.07 (a ninth of the floor) to
-// the floor at x = 7.6; each side is one curve piece, and its points go
-// half-way between the other's at the local spacing.
+// 0.05 thick, widening 0.02: the strip rule's sizes go from 0.175 (the
+// rule's floor is 0.15) to the floor at x = 6.1; each side is one curve
+// piece, and its points go half-way between the other's at the local
+// spacing (at the piece's mean spacing, many faced each other).
 void test_thin_layer_sides(double thickness, double widening = 0.)
 {
   std::cout << "a layer " << thickness << " thick";
@@ -1129,7 +1130,7 @@ int main(int argc, char** argv)
   test_collapse_crowded_vertex();
   test_thin_layer_sides(0.2);
   test_thin_layer_sides(0.1);
-  test_thin_layer_sides(0.02, 0.02);
+  test_thin_layer_sides(0.05, 0.02);
   test_real_models(std::vector<std::string>(argv + 1, argv + argc));
   std::cout << "all remesh_surfaces checks passed\n";
   return EXIT_SUCCESS;

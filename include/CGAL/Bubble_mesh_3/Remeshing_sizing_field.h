@@ -729,7 +729,7 @@ private:
   // needles of 0.13 degrees); its sides are parallel within 10 degrees (the
   // squared cosine).
   static constexpr double strip_spacing_over_width = 3.5;
-  static constexpr double strip_floor = 0.01;
+  static constexpr double strip_floor = 0.25;
   static constexpr double strip_parallel_cos2 = 0.9698;
   static std::vector<std::vector<std::size_t> > ribbon_partners(const Geological_model_3<GeomTraits>& model,
                                                                 const Model_features& features)

@@ -68,6 +68,9 @@ struct Surface_remeshing_report
   /// free points collapsed into a neighbour to lift a triangle over the
   /// angle bound (a point left crowded against a curve)
   std::size_t number_of_collapsed_points = 0;
+  /// curve samples slid along their curve to lift a triangle between curve
+  /// points over the angle bound (where two curves' samples meet at a corner)
+  std::size_t number_of_slid_curve_points = 0;
   std::size_t number_of_points = 0;           ///< points of the output
   std::size_t number_of_triangles = 0;        ///< triangles of the output
 
@@ -252,6 +255,7 @@ public:
       for(std::size_t c : failed) cut_chart(c);
     }
     improve_patches();
+    slide_curve_samples();
     if(set_.keep_region_volumes) balance_volumes();
     snap_to_axis_planes();
     build_output(output);
@@ -593,6 +597,7 @@ private:
     out_points_.clear();
     out_fixed_.clear();
     out_curve_edges_.clear();
+    curve_samples_.clear();
     std::map<std::size_t, std::size_t> kept; // input point -> output point
     auto keep = [&](std::size_t v) {
       auto it = kept.find(v);
@@ -684,6 +689,7 @@ private:
         {
           out_points_.push_back(point_on_polyline(pts, s));
           out_fixed_.push_back(1);
+          if(line.is_curve) curve_samples_.insert(out_points_.size() - 1);
           line.out_points.push_back(out_points_.size() - 1);
           line.out_span.push_back(span);
         }
@@ -826,6 +832,90 @@ private:
         if(collapses == 0) break;
       }
       flip_to_improve_angles(out_points_, patch_out_[p], out_curve_edges_, 30.);
+    }
+  }
+
+  // A triangle under the angle bound with its three points on curves (where
+  // two curves' samples meet at a corner out of step, a strip's end) is beyond
+  // the flips and moves of the free points. A curve sample of such a triangle
+  // slides along its input curve, between its neighbours there, to where the
+  // smallest angle of its triangles (in every patch along the curve) is the
+  // largest, no triangle turning over: it stays on the curve, so the curves
+  // are kept as they were.
+  void slide_curve_samples()
+  {
+    const double bound = set_.angle_bound;
+    std::map<std::size_t, std::vector<std::pair<std::size_t, std::size_t> > > incident; // sample -> (patch, triangle)
+    for(std::size_t p = 0; p < patch_out_.size(); ++p)
+      for(std::size_t i = 0; i < patch_out_[p].size(); ++i)
+        for(std::size_t v : patch_out_[p][i])
+          if(curve_samples_.count(v)) incident[v].push_back(std::make_pair(p, i));
+    // the smallest angle of v's triangles with v at q, or -1 if one turns over;
+    // `under`: how many of them are under the bound
+    auto worst_at = [&](std::size_t v, const Point_3& q, std::size_t& under) {
+      double worst = 180.;
+      under = 0;
+      for(const auto& pi : incident[v])
+      {
+        const Triangle& t = patch_out_[pi.first][pi.second];
+        std::array<Point_3, 3> now, moved;
+        for(int k = 0; k < 3; ++k)
+        {
+          now[k] = out_points_[t[k]];
+          moved[k] = t[k] == v ? q : now[k];
+        }
+        const Vector_3 n0 = CGAL::cross_product(now[1] - now[0], now[2] - now[0]);
+        const Vector_3 n1 = CGAL::cross_product(moved[1] - moved[0], moved[2] - moved[0]);
+        if(!(n0 * n1 > 0.)) return -1.;
+        const double a = min_angle_degrees(moved[0], moved[1], moved[2]);
+        worst = (std::min)(worst, a);
+        if(a < bound) ++under;
+      }
+      return worst;
+    };
+    for(int pass = 0; pass < 3; ++pass)
+    {
+      std::size_t slid = 0;
+      for(const Remesh_line& line : lines_)
+      {
+        if(!line.is_curve || line.out_points.size() < 3) continue;
+        std::vector<Point_3> pts;
+        for(std::size_t v : line.points) pts.push_back(in_.point(v));
+        const Polyline_arc_length<Point_3> arc(pts, 0, pts.size() - 1);
+        for(std::size_t k = 1; k + 1 < line.out_points.size(); ++k)
+        {
+          const std::size_t v = line.out_points[k];
+          if(!curve_samples_.count(v)) continue;
+          std::size_t under_now = 0, under = 0;
+          const double now = worst_at(v, out_points_[v], under_now);
+          if(!(now < bound)) continue;
+          // arc lengths of the neighbours (the line's ends at 0 and its length: a closed line starts where it ends)
+          const std::vector<std::pair<double, double> > at = project_on_polyline(
+            pts, 0, pts.size() - 1, std::vector<Point_3>{out_points_[line.out_points[k - 1]], out_points_[line.out_points[k + 1]]});
+          const double a0 = k == 1 ? 0. : at[0].first, a1 = k + 2 == line.out_points.size() ? arc.total() : at[1].first;
+          if(!(a1 > a0)) continue;
+          double best = now;
+          Point_3 best_q = out_points_[v];
+          for(int j = 1; j < 16; ++j)
+          {
+            const Point_3 q = point_on_polyline(pts, arc.position_at(a0 + (a1 - a0) * double(j) / 16.));
+            const double w = worst_at(v, q, under);
+            // (no more triangles under the bound: raising the worst one must not pull others under)
+            if(w > best && under <= under_now)
+            {
+              best = w;
+              best_q = q;
+            }
+          }
+          if(best > now + 1e-6)
+          {
+            out_points_[v] = best_q;
+            ++slid;
+          }
+        }
+      }
+      report_.number_of_slid_curve_points += slid;
+      if(slid == 0) break;
     }
   }
 
@@ -991,6 +1081,7 @@ private:
   std::vector<Point_3> out_points_;
   std::vector<char> out_fixed_;
   Edge_set out_curve_edges_;
+  std::set<std::size_t> curve_samples_; // output points sampled on curves (not kept input points)
   std::size_t number_of_line_points_ = 0;
   std::vector<std::vector<Triangle> > patch_out_;
 };
