@@ -70,8 +70,7 @@ point of a patch. It is the smallest of
 - the strip rule: on a curve, where another curve of one of its patches
   runs parallel to it (within 10 degrees) without touching it, at a distance
   \f$ w \f$ under \f$ h_{min} / 3.5 \f$ (a thin layer's side on the model's
-  walls), \f$ 3.5\, w \f$ where that is at least \f$ h_{min} / 100 \f$
-  (narrower, a strip pinching out is left as it is): the re-meshing puts one side's
+  walls), \f$ \max(h_{min} / 4, 3.5\, w) \f$: the re-meshing puts one side's
   points half-way between the other's, and at that spacing the triangles
   across reach 25 degrees;
 - with `refine_ribbons`, the ribbon rule: on the two curves of a patch that
@@ -724,10 +723,11 @@ private:
   // half-way between each other's by the re-meshing, make triangles of
   // atan(2 w / s) at a spacing s, at least 25 degrees up to s = 4.3 w. The
   // strip's own floor, over minimum_edge_length, keeps a strip pinching out
-  // from asking for edges down to nothing (a quarter first, which left
-  // CloudSpin's layer squeezed to 0.16-2.4 m along a fault, floor 37.5, in
-  // needles of 0.13 degrees); its sides are parallel within 10 degrees (the
-  // squared cosine).
+  // from asking for edges down to nothing (a hundredth takes CloudSpin's
+  // layer squeezed to 0.16-2.4 m along a fault out of its needles, but the
+  // volume stage then spends over 19 minutes placing bubbles against its
+  // 47,000 small surface bubbles); its sides are parallel within 10 degrees
+  // (the squared cosine).
   static constexpr double strip_spacing_over_width = 3.5;
   static constexpr double strip_floor = 0.25;
   static constexpr double strip_parallel_cos2 = 0.9698;

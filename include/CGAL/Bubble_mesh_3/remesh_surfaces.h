@@ -453,8 +453,8 @@ private:
   (interleave_polyline_samples()). A strip narrows and widens along its
   sides, and the strip rule grades their spacing with it: s is the
   partner's own gap about each of its points, not a mean over the piece
-  (which had CloudSpin's squeezed layer, sampled from 0.6 to 8, left
-  facing). The partner's points must stay where
+  (which left many points of a layer widening from 0.05 to 0.25 facing
+  each other). The partner's points must stay where
   they are: kept points, or samples of a line before this one that was not
   moved, so that of two sides of a strip one moves.
   */
@@ -1418,7 +1418,9 @@ The method follows the original bubble meshing, level by level:
   `minimum_triangle_angle`; in 3D, edge flips and vertex moves projected
   onto the patch finish the job, and a point left crowded into a triangle
   under that angle is collapsed into a neighbour where that helps
-  (`Surface_remeshing_report::number_of_collapsed_points`).
+  (`Surface_remeshing_report::number_of_collapsed_points`), and a curve
+  sample of a triangle under it slides along its curve where that helps
+  (`Surface_remeshing_report::number_of_slid_curve_points`).
 
 Every new point lies on the input patch (it is a point of an input
 triangle of the same patch, up to rounding). On a curved input patch a new
