@@ -1141,18 +1141,20 @@ std::vector<std::size_t> triangles_in_sharp_wedges(const Geological_model_3<Geom
     for(const auto& m0 : i0->second)
     {
       if(sectors[m0.first].patch != output.patch_of_triangle(t)) continue;
+      // (a lens's far tip lies on both sides)
       int sides = 0, found = 0;
       for(std::size_t v : tri)
       {
         const auto iv = on_wedge.find(v);
         if(iv == on_wedge.end()) break;
+        bool on = false;
         for(const auto& m : iv->second)
           if(m.first == m0.first)
           {
-            ++found;
+            on = true;
             sides |= m.second == 0 ? 3 : m.second;
-            break;
           }
+        found += on ? 1 : 0;
       }
       if(found == 3 && sides == 3)
       {
