@@ -30,6 +30,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <set>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -106,9 +107,24 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
   for(const auto& c : by_patch)
     std::cout << " " << output.patch(c.first).name << " " << c.second.first << " (" << c.second.second << ")";
   std::cout << "\n";
-  std::cout << "    triangles under " << r.angle_bound << " deg outside those wedges, worst first (angle, patch, centroid, edge lengths, "
-            << "target at the centroid; the field's floor is " << field.minimum_size() << "):\n";
-  for(std::size_t i = 0; i < small.size() && i < 40; ++i)
+  // the points on curves: those of two patches or more, or of a border edge of one
+  std::vector<std::set<std::size_t> > patches_of(output.number_of_points());
+  std::map<std::pair<std::size_t, std::size_t>, int> edge_uses;
+  for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t a = output.triangle(t)[k], b = output.triangle(t)[(k + 1) % 3];
+      patches_of[a].insert(output.patch_of_triangle(t));
+      ++edge_uses[std::make_pair((std::min)(a, b), (std::max)(a, b))];
+    }
+  std::vector<bool> on_curve(output.number_of_points(), false);
+  for(std::size_t v = 0; v < on_curve.size(); ++v) on_curve[v] = patches_of[v].size() > 1;
+  for(const auto& e : edge_uses)
+    if(e.second == 1) on_curve[e.first.first] = on_curve[e.first.second] = true;
+  std::cout << "    triangles under " << r.angle_bound << " deg outside those wedges, worst first (angle, patch, centroid, edge lengths "
+            << "(the first from the first point), the point's angle with c when on a curve, target at the centroid; the field's floor is "
+            << field.minimum_size() << "):\n";
+  for(std::size_t i = 0; i < small.size() && i < 100; ++i)
   {
     const auto& tri = output.triangle(small[i].second);
     const Point g = CGAL::centroid(output.point(tri[0]), output.point(tri[1]), output.point(tri[2]));
@@ -116,7 +132,11 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
               << output.patch(output.patch_of_triangle(small[i].second)).name << ")  " << g << "  ";
     for(int k = 0; k < 3; ++k)
       std::cout << std::sqrt(CGAL::squared_distance(output.point(tri[k]), output.point(tri[(k + 1) % 3]))) << " ";
-    std::cout << " target " << field(g, output.patch_of_triangle(small[i].second)) << "\n";
+    std::cout << " angles";
+    for(int k = 0; k < 3; ++k)
+      std::cout << " " << CGAL::approximate_angle(output.point(tri[(k + 2) % 3]), output.point(tri[k]), output.point(tri[(k + 1) % 3]))
+                << (on_curve[tri[k]] ? "c" : "");
+    std::cout << "  target " << field(g, output.patch_of_triangle(small[i].second)) << "\n";
   }
 }
 

@@ -416,8 +416,9 @@ static void test_area_weighted_radius_floor()
 // the query; the field walks its grid's cells nearest first and skips those whose
 // smallest bubble could not lower it. Against brute force over every surface
 // bubble of the region, on the two-layer box with radii spread over 0.05..0.5
-// (a cell of small bubbles beside cells of large ones), at points inside, on and
-// outside the box: the same value.
+// (a cell of small bubbles beside cells of large ones, in two radius classes),
+// at points inside, on and outside the box: the same value; and the same
+// interpolated radius as the weight-point formula over every bubble.
 static void test_graded_bound_against_brute_force()
 {
   const Model box = make_two_layer_box();
@@ -441,8 +442,22 @@ static void test_graded_bound_against_brute_force()
       for(int k = 0; k < 300; ++k)
       {
         const Point_3 p(rng.get_double(-3., 13.), rng.get_double(-3., 9.), rng.get_double(-1., 5.));
-        double brute = interpolated(p, region);
         const double x = p.x(), y = p.y(), z = p.z();
+        // the weight points by the formula, over every surface bubble of the region
+        const double r0 = interpolated.default_radius(region);
+        double weights = 1. / (2. * 1.5 * r0), sum = r0 * weights;
+        for(const Bubble& b : sb)
+          if(points.count(b.surface_point))
+          {
+            const double dx = b.center.x() - x, dy = b.center.y() - y, dz = b.center.z() - z;
+            const double l = std::sqrt(dx * dx + dy * dy + dz * dz), reach = 1.5 * (r0 + b.radius);
+            if(!(l < reach)) continue;
+            const double u = 1. - (l / reach) * (l / reach), w = u * u / l;
+            weights += w;
+            sum += w * b.radius;
+          }
+        assert(close(interpolated(p, region), sum / weights, 1e-12));
+        double brute = interpolated(p, region);
         for(const Bubble& b : sb)
           if(points.count(b.surface_point))
           {

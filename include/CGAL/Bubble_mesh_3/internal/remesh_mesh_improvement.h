@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <deque>
 #include <iterator>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -113,7 +114,8 @@ std::size_t flip_to_improve_angles(const std::vector<Point_3>& points, std::vect
 // Moves free vertices to better places, projected onto the input patch:
 // towards the centre of their neighbours, and for a vertex with a poor
 // triangle around it also towards the apex that would make that triangle
-// equilateral (the only cure next to a curve, whose points cannot move). A
+// equilateral (the only cure next to a curve, whose points cannot move),
+// then, still under `angle_goal`, by a compass search around the best. A
 // move is kept when the smallest angle around the vertex reaches at least
 // min(its old value, `angle_goal`) - and grows if it was under the goal -
 // and no triangle turns over. Returns the number of moves.
@@ -182,21 +184,25 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
     candidates.push_back(centre);
     if(old_min < angle_goal) candidates.push_back(CGAL::midpoint(centre, points[v]));
     const Point_3 old = points[v];
-    Point_3 best = old;
-    double best_min = old_min;
-    for(const Point_3& c : candidates)
-    {
+    // the smallest angle around v at the patch point nearest to c, or -1 if a triangle turns over
+    auto smallest_angle_at = [&](const Point_3& c) {
       points[v] = patch_tree.closest_point(c);
       double new_min = 180.;
-      bool folded = false;
-      for(std::size_t i = 0; i < inc.size() && !folded; ++i)
+      for(std::size_t i = 0; i < inc.size(); ++i)
       {
         const auto& tri = triangles[inc[i]];
         new_min = (std::min)(new_min, min_angle_degrees(points[tri[0]], points[tri[1]], points[tri[2]]));
         const Vector_3 n = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
-        if(!(CGAL::to_double(n * old_normals[i]) > 0.5)) folded = true;
+        if(!(CGAL::to_double(n * old_normals[i]) > 0.5)) return -1.;
       }
-      if(folded) continue;
+      return new_min;
+    };
+    Point_3 best = old;
+    double best_min = old_min;
+    for(const Point_3& c : candidates)
+    {
+      const double new_min = smallest_angle_at(c);
+      if(new_min < 0.) continue;
       // under the goal: only a real gain counts; above it, the centre is preferred
       const bool better = (old_min < angle_goal) ? (new_min > best_min + 1e-6)
                                                  : (best == old && new_min >= angle_goal);
@@ -204,6 +210,52 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
       {
         best = points[v];
         best_min = new_min;
+      }
+    }
+    if(best_min < angle_goal)
+    {
+      // Still under the goal: a compass search in the tangent plane, eight
+      // directions, halving the step when none gains. The candidates above aim
+      // at one triangle or at the centre; where the other triangles around v
+      // hold it back (a free point crowded against a curve sample: one of
+      // modelA2's two triangles under 25 degrees, 23.6 before), the best place
+      // lies between them.
+      Vector_3 normal(0, 0, 0);
+      for(const Vector_3& n : old_normals) normal = normal + n;
+      double shortest = std::numeric_limits<double>::infinity();
+      for(std::size_t t : inc)
+        for(std::size_t w : triangles[t])
+          if(w != v) shortest = (std::min)(shortest, CGAL::to_double(CGAL::squared_distance(old, points[w])));
+      const double nl = std::sqrt(CGAL::to_double(normal.squared_length()));
+      if(nl > 0. && shortest > 0.)
+      {
+        normal = normal / nl;
+        // a unit vector across the normal, from the axis it is least along
+        const double ax = std::abs(CGAL::to_double(normal.x())), ay = std::abs(CGAL::to_double(normal.y())),
+                     az = std::abs(CGAL::to_double(normal.z()));
+        const Vector_3 axis = (ax <= ay && ax <= az) ? Vector_3(1, 0, 0) : (ay <= az ? Vector_3(0, 1, 0) : Vector_3(0, 0, 1));
+        Vector_3 e1 = CGAL::cross_product(normal, axis);
+        e1 = e1 / std::sqrt(CGAL::to_double(e1.squared_length()));
+        const Vector_3 e2 = CGAL::cross_product(normal, e1);
+        const double first = 0.25 * std::sqrt(shortest);
+        int rounds = 0; // (each gains, but by as little as 1e-6 degrees)
+        for(double step = first; step > first / 64. && rounds < 40; ++rounds)
+        {
+          bool gained = false;
+          const Point_3 from = best;
+          for(int k = 0; k < 8; ++k)
+          {
+            const double a = k * 0.78539816339744831;
+            const double new_min = smallest_angle_at(from + (e1 * std::cos(a) + e2 * std::sin(a)) * step);
+            if(new_min > best_min + 1e-6)
+            {
+              best = points[v];
+              best_min = new_min;
+              gained = true;
+            }
+          }
+          if(!gained) step *= 0.5;
+        }
       }
     }
     points[v] = best;
