@@ -899,6 +899,17 @@ int main(int argc, char** argv)
                 << ") is the number of edges across them: with half as many they are twice as long, "
                    "with 0 the rule is off\n"
                 << std::defaultfloat;
+    // well below the rule's floor a layer is crossed by one flat tetrahedron: say where that starts
+    const double across = report.thickness_rule_relaxed ? report.elements_across_thickness_used : opt.layer_elements;
+    if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size > 2. * rr.smallest_thickness)
+      std::cout << std::setprecision(4) << "note: edges stop at " << rr.smallest_thickness_size
+                << " (the thickness rule's floor): where a layer is thinner than " << across * rr.smallest_thickness_size
+                << " (here down to " << rr.smallest_thickness
+                << ": a pinch-out's tip, or a layer thinner than that all along), its tetrahedra are flat (at the thinnest, "
+                << rr.smallest_thickness_size / rr.smallest_thickness
+                << " times wider than thick); a smaller --size, or --region-size-factor for that layer, lowers the floor "
+                   "(many more tetrahedra)\n"
+                << std::defaultfloat;
     // new triangles are chords across the input's creases: on a curved, coarsely
     // faceted surface (a tunnel of 16 facets) that changes a region's volume by
     // percents, unless the balance gave it back

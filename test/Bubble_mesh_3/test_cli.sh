@@ -461,6 +461,11 @@ run "$tmp/slab.obj" --remesh-surfaces --size 25% --no-sliver-removal --threads 2
 n2="$(slab_triangles)"
 check "thin slab: the note names the thickness rule's sizes" contains "$out" "note: thin layers or fault tips (thickness down to 0.1) make edges as short as 0.06135 there, under the target size"
 check "thin slab: ... and --layer-elements" contains "$out" "--layer-elements (now 1.63)"
+check "thin slab above the rule's floor: no flat-layer note" test -z "$(echo "$out" | grep 'note: edges stop at')"
+# at twice the diagonal the floor (a tenth of it) is over twice the slab's thickness
+run "$tmp/slab.obj" --remesh-surfaces --size 200% --no-sliver-removal --threads 2
+check "thin slab well under the rule's floor: the note gives the floor" contains "$out" "note: edges stop at 0.28"
+check "... and says the slab's tetrahedra are flat" contains "$out" "(here down to 0.1: a pinch-out's tip, or a layer thinner than that all along), its tetrahedra are flat"
 echo "  slab re-meshed triangles with 0 / 1 / 1.63 (default) edges across: $n0 / $n1 / $n2"
 check "--layer-elements: finer with more edges across a thin layer" \
   test -n "$n0" -a -n "$n1" -a -n "$n2" -a "${n0:-0}" -lt "${n1:-0}" -a "${n1:-0}" -lt "${n2:-0}"
