@@ -229,7 +229,7 @@ int main(int argc, char** argv)
                 << r.number_of_chart_cuts << " cuts), curve points " << r.number_of_curve_points
                 << " (" << r.number_of_staggered_curve_pieces << " curve pieces staggered across strips), "
                 << r.number_of_collapsed_points << " crowded points collapsed, " << r.number_of_slid_curve_points
-                << " curve points slid\n"
+                << " curve points slid, " << r.number_of_split_curve_triangles << " triangles between curve points split\n"
                 << "    volume error before balancing " << r.volume_error_before_balancing << ", "
                 << r.number_of_volume_balancing_steps << " steps, " << r.number_of_volume_balancing_points
                 << " points moved, farthest " << r.largest_volume_balancing_move << " sizes, "

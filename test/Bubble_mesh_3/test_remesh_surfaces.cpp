@@ -1056,6 +1056,51 @@ void test_smooth_to_best_place()
   assert(got >= grid_best - 0.5);
 }
 
+// A triangle under 25 degrees between three curve samples (fixed points) -
+// a strip's sides sampled closer than its width, modelA2's last one - is
+// split across its longest free edge when the new point can lift the four
+// triangles around it over the bound, and left as it is when it cannot (the
+// triangle across that edge a needle itself).
+void test_split_fixed_triangle()
+{
+  std::cout << "a triangle between three curve samples\n";
+  Model plane;
+  const std::size_t region = plane.add_region("below");
+  const std::size_t patch = plane.add_patch("plane", 0, region);
+  for(const Point& q : {Point(-20, -20, 0), Point(20, -20, 0), Point(20, 20, 0), Point(-20, 20, 0)}) plane.add_point(q);
+  plane.add_triangle(0, 1, 2, patch);
+  plane.add_triangle(0, 2, 3, patch);
+  const BM::internal::Remesh_triangle_tree<K> tree(plane, std::vector<std::size_t>{0, 1});
+  for(const Point& far : {Point(6, 8, 0), Point(2.0, 4.5, 0)})
+  {
+    // A, B on one curve, C on the other, D beyond the free edge B C
+    std::vector<Point> pts{Point(0, 0, 0), Point(3.66, 0, 0), Point(0, 8.8, 0), far};
+    std::vector<std::array<std::size_t, 3> > tris{{{0, 1, 2}}, {{2, 1, 3}}};
+    std::vector<char> fixed(pts.size(), 1);
+    BM::internal::Edge_set curves;
+    for(const auto& e : {std::make_pair(0, 1), std::make_pair(0, 2), std::make_pair(1, 3), std::make_pair(2, 3)})
+      curves[BM::internal::edge_key(std::size_t(e.first), std::size_t(e.second))] = 1;
+    auto smallest = [&]() {
+      double m = 180.;
+      for(const auto& t : tris) m = (std::min)(m, BM::internal::min_angle_degrees(pts[t[0]], pts[t[1]], pts[t[2]]));
+      return m;
+    };
+    const double before = smallest();
+    const std::vector<std::array<std::size_t, 3> > old = tris;
+    const std::size_t splits = BM::internal::split_fixed_triangles<K>(pts, tris, fixed, curves, tree, 25.);
+    std::cout << "  D at " << far << ": smallest angle " << before << " -> " << smallest() << ", " << splits << " split\n";
+    assert(before < 23.);
+    if(far == Point(6, 8, 0))
+    {
+      assert(splits == 1 && tris.size() == 4 && pts.size() == 5 && fixed.size() == 5 && !fixed[4]);
+      assert(smallest() >= 25.);
+      assert(pts[4].z() == 0.);
+    }
+    else
+      assert(splits == 0 && tris == old && pts.size() == 4 && fixed.size() == 4);
+  }
+}
+
 // A layer `thickness` thick in the box [0,10] x [0,8] x [0,6], with a floor
 // of the thickness rule (0.6) well over its thickness: its sides on the
 // box's walls are strips whose two long curves are sampled alike.
@@ -1184,6 +1229,7 @@ int main(int argc, char** argv)
   test_ribbon();
   test_collapse_crowded_vertex();
   test_smooth_to_best_place();
+  test_split_fixed_triangle();
   test_thin_layer_sides(0.2);
   test_thin_layer_sides(0.1);
   test_thin_layer_sides(0.05, 0.02);

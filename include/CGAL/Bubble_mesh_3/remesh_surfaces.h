@@ -71,6 +71,10 @@ struct Surface_remeshing_report
   /// curve samples slid along their curve to lift a triangle between curve
   /// points over the angle bound (where two curves' samples meet at a corner)
   std::size_t number_of_slid_curve_points = 0;
+  /// free points added across an edge of a triangle under the angle bound
+  /// whose three points are curve samples, where that lifts the four
+  /// triangles around them over the bound
+  std::size_t number_of_split_curve_triangles = 0;
   std::size_t number_of_points = 0;           ///< points of the output
   std::size_t number_of_triangles = 0;        ///< triangles of the output
 
@@ -831,6 +835,8 @@ private:
         report_.number_of_collapsed_points += collapses;
         if(collapses == 0) break;
       }
+      report_.number_of_split_curve_triangles += split_fixed_triangles<GeomTraits>(
+        out_points_, patch_out_[p], out_fixed_, out_curve_edges_, patch_trees_[p], set_.angle_bound);
       flip_to_improve_angles(out_points_, patch_out_[p], out_curve_edges_, 30.);
     }
   }
@@ -1420,7 +1426,10 @@ The method follows the original bubble meshing, level by level:
   `minimum_triangle_angle`; in 3D, edge flips and vertex moves projected
   onto the patch finish the job, and a point left crowded into a triangle
   under that angle is collapsed into a neighbour where that helps
-  (`Surface_remeshing_report::number_of_collapsed_points`), and a curve
+  (`Surface_remeshing_report::number_of_collapsed_points`), a triangle
+  under it between three curve samples gets a new point across an edge
+  where that lifts the triangles around it over the angle
+  (`Surface_remeshing_report::number_of_split_curve_triangles`), and a curve
   sample of a triangle under it slides along its curve where that helps
   (`Surface_remeshing_report::number_of_slid_curve_points`).
 

@@ -409,6 +409,77 @@ std::size_t collapse_crowded_vertices(std::vector<Point_3>& points, std::vector<
   return collapses;
 }
 
+
+// Splits an edge of a triangle under `angle_bound` whose three points are
+// fixed (curve samples), which no move, flip or collapse of free points can
+// change: the longest of its edges that is not in `constrained`. The new free
+// point, projected onto the patch, takes the best place `smooth_free_vertices()`
+// finds between the four triangles around it, and the split is kept when
+// none of them is under the bound. (Kept when they only gained a degree, the
+// splits made needles of the new points: CloudSpin got 6 more triangles
+// under 25.) `fixed` grows with the points. Returns the number of splits.
+template <class GeomTraits>
+std::size_t split_fixed_triangles(std::vector<typename GeomTraits::Point_3>& points,
+                                  std::vector<std::array<std::size_t, 3> >& triangles, std::vector<char>& fixed,
+                                  const Edge_set& constrained, const Remesh_triangle_tree<GeomTraits>& patch_tree,
+                                  double angle_bound)
+{
+  typedef std::array<std::size_t, 3> Triangle;
+  std::size_t splits = 0;
+  for(std::size_t t1 = 0; t1 < triangles.size(); ++t1)
+  {
+    const Triangle tri = triangles[t1];
+    if(!fixed[tri[0]] || !fixed[tri[1]] || !fixed[tri[2]]) continue;
+    if(!(min_angle_degrees(points[tri[0]], points[tri[1]], points[tri[2]]) < angle_bound)) continue;
+    // the edge a -> b opposite c: the longest one free to split
+    int k = -1;
+    double longest = 0.;
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t a = tri[(i + 1) % 3], b = tri[(i + 2) % 3];
+      const double l = CGAL::to_double(CGAL::squared_distance(points[a], points[b]));
+      if(!constrained.count(edge_key(a, b)) && l > longest)
+      {
+        longest = l;
+        k = i;
+      }
+    }
+    if(k < 0) continue;
+    const std::size_t c = tri[k], a = tri[(k + 1) % 3], b = tri[(k + 2) % 3];
+    std::size_t t2 = triangles.size(), d = 0;
+    for(std::size_t t = 0; t < triangles.size() && t2 == triangles.size(); ++t)
+      for(int i = 0; i < 3; ++i)
+        if(t != t1 && triangles[t][i] == b && triangles[t][(i + 1) % 3] == a)
+        {
+          t2 = t;
+          d = triangles[t][(i + 2) % 3];
+        }
+    if(t2 == triangles.size()) continue;
+    const std::size_t m = points.size();
+    points.push_back(patch_tree.closest_point(CGAL::midpoint(points[a], points[b])));
+    fixed.push_back(0);
+    std::vector<Triangle> around{{{a, m, c}}, {{m, b, c}}, {{b, m, d}}, {{m, a, d}}};
+    std::vector<char> only_m(points.size(), 1);
+    only_m[m] = 0;
+    for(int pass = 0; pass < 3; ++pass)
+      if(smooth_free_vertices<GeomTraits>(points, around, only_m, patch_tree, 90.) == 0) break;
+    double new_min = 180.;
+    for(const Triangle& t : around)
+      new_min = (std::min)(new_min, min_angle_degrees(points[t[0]], points[t[1]], points[t[2]]));
+    if(!(new_min >= angle_bound))
+    {
+      points.pop_back();
+      fixed.pop_back();
+      continue;
+    }
+    triangles[t1] = around[0];
+    triangles[t2] = around[2];
+    triangles.push_back(around[1]);
+    triangles.push_back(around[3]);
+    ++splits;
+  }
+  return splits;
+}
 } // namespace internal
 } // namespace Bubble_mesh_3
 } // namespace CGAL
