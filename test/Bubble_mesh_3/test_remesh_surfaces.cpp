@@ -1004,6 +1004,19 @@ void test_collapse_crowded_vertex()
   assert(used.size() == 7 && CGAL::squared_distance(pts[kept], Point(0, 0, 0)) < 1e-24);
 }
 
+// The square [-h, h]^2 of the plane z = 0 as one patch (two triangles): the
+// surface that the moves of the tests below are projected onto.
+Model square_patch(double h)
+{
+  Model plane;
+  const std::size_t region = plane.add_region("below");
+  const std::size_t patch = plane.add_patch("plane", 0, region);
+  for(const Point& q : {Point(-h, -h, 0), Point(h, -h, 0), Point(h, h, 0), Point(-h, h, 0)}) plane.add_point(q);
+  plane.add_triangle(0, 1, 2, patch);
+  plane.add_triangle(0, 2, 3, patch);
+  return plane;
+}
+
 // A free vertex whose best place is not at the centre of its neighbours, nor
 // at the apex that would make one of its triangles equilateral: an uneven
 // ring of seven fixed points (from a random draw) around it, where the centre
@@ -1013,12 +1026,7 @@ void test_collapse_crowded_vertex()
 void test_smooth_to_best_place()
 {
   std::cout << "a free vertex in an uneven ring\n";
-  Model plane;
-  const std::size_t region = plane.add_region("below");
-  const std::size_t patch = plane.add_patch("plane", 0, region);
-  for(const Point& q : {Point(-5, -5, 0), Point(5, -5, 0), Point(5, 5, 0), Point(-5, 5, 0)}) plane.add_point(q);
-  plane.add_triangle(0, 1, 2, patch);
-  plane.add_triangle(0, 2, 3, patch);
+  const Model plane = square_patch(5.);
   const BM::internal::Remesh_triangle_tree<K> tree(plane, std::vector<std::size_t>{0, 1});
   std::vector<Point> pts{Point(1.286, 0.864, 0),  Point(0.265, 0.416, 0), Point(0.08, 0.962, 0),
                          Point(-1.076, 0.481, 0), Point(-1.023, 0.135, 0), Point(-1.128, -0.64, 0),
@@ -1064,12 +1072,7 @@ void test_smooth_to_best_place()
 void test_split_fixed_triangle()
 {
   std::cout << "a triangle between three curve samples\n";
-  Model plane;
-  const std::size_t region = plane.add_region("below");
-  const std::size_t patch = plane.add_patch("plane", 0, region);
-  for(const Point& q : {Point(-20, -20, 0), Point(20, -20, 0), Point(20, 20, 0), Point(-20, 20, 0)}) plane.add_point(q);
-  plane.add_triangle(0, 1, 2, patch);
-  plane.add_triangle(0, 2, 3, patch);
+  const Model plane = square_patch(20.);
   const BM::internal::Remesh_triangle_tree<K> tree(plane, std::vector<std::size_t>{0, 1});
   for(const Point& far : {Point(6, 8, 0), Point(2.0, 4.5, 0)})
   {
