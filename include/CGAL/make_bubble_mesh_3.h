@@ -65,7 +65,6 @@ struct Bubble_mesh_report
 
 namespace internal_np {
 enum bubble_mesh_report_t { bubble_mesh_report };
-enum stage_callback_t { stage_callback };
 enum remesh_input_surfaces_t { remesh_input_surfaces };
 enum keep_input_triangles_t { keep_input_triangles };
 } // namespace internal_np
@@ -75,13 +74,6 @@ namespace parameters {
 /// \ingroup PkgBubbleMesh3Ref
 /// `make_bubble_mesh_3()` fills the `Bubble_mesh_report` pointed to
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Bubble_mesh_report*, bubble_mesh_report)
-/// \ingroup PkgBubbleMesh3Ref
-/// the type of the `stage_callback` parameter
-typedef std::function<void(const std::string&)> Stage_callback;
-/// \ingroup PkgBubbleMesh3Ref
-/// `make_bubble_mesh_3()` calls `f(stage_name)` when a stage starts (for a progress line)
-CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Stage_callback, stage_callback)
-
 /// \ingroup PkgBubbleMesh3Ref
 /// `make_bubble_mesh_3()` re-meshes the model's surfaces with `remesh_surfaces()` first
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(bool, remesh_input_surfaces)

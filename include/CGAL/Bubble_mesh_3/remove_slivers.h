@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -550,6 +551,10 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   const unsigned int seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   const double budget = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  // a progress line for each step: on a model with flat layers the whole stage ran 6 minutes
+  const std::function<void(const std::string&)> stage =
+    choose_parameter(get_parameter(np, internal_np::stage_callback), std::function<void(const std::string&)>());
+  auto announce = [&](const char* step) { if(stage) stage(std::string("sliver removal: ") + step); };
   const double limit = budget > 0. ? budget : std::numeric_limits<double>::infinity();
   // region volumes are sums of the same cells' volumes in another order
   const double volume_tolerance = 1e-9;
@@ -603,6 +608,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   // 1. perturbation
   if(perturb && regular && r.number_of_slivers_before > 0)
   {
+    announce("moving bubbles");
     CGAL::Real_timer timer;
     timer.start();
     internal::Interior_vertex_perturber<C3T3> perturber(c3t3, bound, radius_factor, directions, seed);
@@ -639,6 +645,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   // guarantees are not part of its documentation
   if(exude && regular && r.number_of_slivers_after_perturbation > 0)
   {
+    announce("exudation");
     CGAL::Real_timer timer;
     timer.start();
     const double left = limit - total.time();
@@ -671,6 +678,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   // 3. polish, checked like the exudation and kept only if it helps
   if(polish && c3t3.number_of_cells_in_complex() > 0)
   {
+    announce("polishing");
     CGAL::Real_timer timer;
     timer.start();
     if(limit - total.time() <= 0.) r.time_limit_reached = true;
@@ -762,6 +770,8 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
     r.time_flips += timer.time();
   };
   // collapses and flips open each other's moves: alternate while collapses pay
+  if((may_collapse || flip) && r.number_of_slivers_after > 0)
+    announce(may_collapse ? "collapsing Steiner points and flipping" : "flipping");
   for(std::size_t round = 0; round < 3; ++round)
   {
     const std::size_t collapsed = collapses();
@@ -772,6 +782,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   r.number_of_slivers_after_flips = r.number_of_slivers_after;
   if(insert && r.number_of_slivers_after > 0)
   {
+    announce("inserting vertices");
     CGAL::Real_timer timer;
     timer.start();
     const double left = limit - total.time();
