@@ -19,6 +19,7 @@
 #include <CGAL/Bubble_mesh_3/tetrahedralize_bubbles.h>
 #include <CGAL/Bubble_mesh_3/remove_slivers.h>
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
+#include <CGAL/Bubble_mesh_3/internal/stage_callback.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 

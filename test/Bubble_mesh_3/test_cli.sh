@@ -673,6 +673,7 @@ assert all(r['volume'] > 0 for r in regions)
   check "meshing the default model exits 0" test "$rc" -eq 0
   check "progress line per stage" contains "$out" "tetrahedralization..."
   check "progress line per step of the sliver removal" contains "$out" "s] sliver removal: moving bubbles..."
+  check "progress line per step of the tetrahedralization" contains "$out" "s] tetrahedralization: recovering the surfaces..."
   check "summary gives tetrahedra" contains "$out" "tetrahedra"
   check "summary gives triangles kept whole" contains "$out" "input triangles kept whole"
   check "summary reports sliver removal" contains "$out" "sliver removal: tetrahedra with a dihedral angle under 15"

@@ -12,6 +12,7 @@
 #include <CGAL/Bubble_mesh_3/internal/insert_sliver_vertices.h>
 #include <CGAL/Bubble_mesh_3/internal/perturb_interior_vertices.h>
 #include <CGAL/Bubble_mesh_3/internal/sliver_parameters.h>
+#include <CGAL/Bubble_mesh_3/internal/stage_callback.h>
 
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Mesh_optimization_return_code.h>
@@ -552,9 +553,7 @@ Sliver_removal_report remove_slivers(C3T3& c3t3, const NamedParameters& np = CGA
   const double budget = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   // a progress line for each step: on a model with flat layers the whole stage ran 6 minutes
-  const std::function<void(const std::string&)> stage =
-    choose_parameter(get_parameter(np, internal_np::stage_callback), std::function<void(const std::string&)>());
-  auto announce = [&](const char* step) { if(stage) stage(std::string("sliver removal: ") + step); };
+  const auto announce = internal::step_announcer(np, "sliver removal");
   const double limit = budget > 0. ? budget : std::numeric_limits<double>::infinity();
   // region volumes are sums of the same cells' volumes in another order
   const double volume_tolerance = 1e-9;

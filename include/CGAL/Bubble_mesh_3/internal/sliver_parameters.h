@@ -18,9 +18,6 @@
 #include <CGAL/Bubble_mesh_3/internal/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
-#include <functional>
-#include <string>
-
 namespace CGAL {
 namespace Bubble_mesh_3 {
 
@@ -35,7 +32,6 @@ enum flip_slivers_t { flip_slivers };
 enum collapse_steiner_points_t { collapse_steiner_points };
 enum perturbation_radius_factor_t { perturbation_radius_factor };
 enum number_of_perturbation_directions_t { number_of_perturbation_directions };
-enum stage_callback_t { stage_callback };
 } // namespace internal_np
 
 namespace parameters {
@@ -80,14 +76,6 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(double, perturbation_radius_factor)
 /// \ingroup PkgBubbleMesh3Ref
 /// `remove_slivers()`: random directions tried per vertex and pass, besides the directions away from its slivers
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(unsigned int, number_of_perturbation_directions)
-
-/// \ingroup PkgBubbleMesh3Ref
-/// the type of the `stage_callback` parameter
-typedef std::function<void(const std::string&)> Stage_callback;
-/// \ingroup PkgBubbleMesh3Ref
-/// `make_bubble_mesh_3()` calls `f(stage_name)` when a stage starts (for a progress line), and
-/// `remove_slivers()` when each of its steps starts (`"sliver removal: moving bubbles"`, ...)
-CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(Stage_callback, stage_callback)
 
 } // namespace parameters
 } // namespace Bubble_mesh_3
