@@ -109,18 +109,12 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
   std::cout << "\n";
   // the points on curves: those of two patches or more, or of a border edge of one
   std::vector<std::set<std::size_t> > patches_of(output.number_of_points());
-  std::map<std::pair<std::size_t, std::size_t>, int> edge_uses;
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t a = output.triangle(t)[k], b = output.triangle(t)[(k + 1) % 3];
-      patches_of[a].insert(output.patch_of_triangle(t));
-      ++edge_uses[std::make_pair((std::min)(a, b), (std::max)(a, b))];
-    }
+    for(std::size_t v : output.triangle(t)) patches_of[v].insert(output.patch_of_triangle(t));
   std::vector<bool> on_curve(output.number_of_points(), false);
   for(std::size_t v = 0; v < on_curve.size(); ++v) on_curve[v] = patches_of[v].size() > 1;
-  for(const auto& e : edge_uses)
-    if(e.second == 1) on_curve[e.first.first] = on_curve[e.first.second] = true;
+  for(const auto& e : BM::internal::edge_triangles(output))
+    if(e.second.size() == 1) on_curve[e.first.first] = on_curve[e.first.second] = true;
   std::cout << "    triangles under " << r.angle_bound << " deg outside those wedges, worst first (angle, patch, centroid, edge lengths "
             << "(the first from the first point), the point's angle with c when on a curve, target at the centroid; the field's floor is "
             << field.minimum_size() << "):\n";

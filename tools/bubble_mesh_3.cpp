@@ -891,16 +891,15 @@ int main(int argc, char** argv)
       std::cout << ", curve distance " << rr.max_curve_distance << " of the diagonal\n" << std::defaultfloat;
     }
     // a user who asked for a size should know where the mesh is finer, and why
+    const double across = report.thickness_rule_relaxed ? report.elements_across_thickness_used : opt.layer_elements;
     if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size < rr.target_size)
       std::cout << std::setprecision(4) << "note: thin layers or fault tips (thickness down to "
                 << rr.smallest_thickness << ") make edges as short as " << rr.smallest_thickness_size
                 << " there, under the target size " << rr.target_size << "; --layer-elements (now "
-                << (report.thickness_rule_relaxed ? report.elements_across_thickness_used : opt.layer_elements)
-                << ") is the number of edges across them: with half as many they are twice as long, "
+                << across << ") is the number of edges across them: with half as many they are twice as long, "
                    "with 0 the rule is off\n"
                 << std::defaultfloat;
     // well below the rule's floor a layer is crossed by one flat tetrahedron: say where that starts
-    const double across = report.thickness_rule_relaxed ? report.elements_across_thickness_used : opt.layer_elements;
     if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size > 2. * rr.smallest_thickness)
       std::cout << std::setprecision(4) << "note: edges stop at " << rr.smallest_thickness_size
                 << " (the thickness rule's floor): where a layer is thinner than " << across * rr.smallest_thickness_size

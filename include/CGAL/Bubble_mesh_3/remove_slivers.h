@@ -33,7 +33,6 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
-#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
