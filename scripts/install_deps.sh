@@ -7,7 +7,7 @@ set -euo pipefail
 build_pkgs=(cmake g++ make ccache libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
             libopenmesh-dev libtbb-dev)
 test_pkgs=(python3 gmsh python3-gmsh python3-vtk9 calculix-ccx doxygen tetgen)
-bench_pkgs=(tetgen gmsh clang libclang-rt-14-dev)
+bench_pkgs=(tetgen gmsh clang libclang-rt-14-dev python3-numpy)
 
 want=("${build_pkgs[@]}")
 for arg in "$@"; do

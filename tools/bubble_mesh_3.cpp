@@ -17,6 +17,7 @@
 #include <CGAL/Bubble_mesh_3/IO/write_svg_section.h>
 #include <CGAL/Bubble_mesh_3/Remeshing_sizing_field.h>
 #include <CGAL/Bubble_mesh_3/Repulsive_bubble_force.h>
+#include <CGAL/Bubble_mesh_3/Corner_forced_facet_angle.h>
 #include <CGAL/Bubble_mesh_3/mesh_quality.h>
 #include <CGAL/make_bubble_mesh_3.h>
 #include <CGAL/Real_timer.h>
@@ -847,10 +848,15 @@ int main(int argc, char** argv)
   const std::size_t steiner_points = sr.collapses_done ? sr.number_of_steiner_points_left : tr.number_of_steiner_points();
   const std::size_t kept_whole =
     sr.collapses_done ? meshed_triangles - sr.number_of_triangles_split : tr.number_of_triangles_kept_whole;
-  auto quality = BM::compute_c3t3_quality(c3t3,
-                   BM::parameters::number_of_steiner_points(steiner_points,
-                   BM::parameters::number_of_input_triangles(meshed_triangles,
-                   BM::parameters::number_of_input_triangles_kept_whole(kept_whole))));
+  // on re-meshed surfaces, a facet that an input corner forces thin counts with the corner's angle
+  const auto quality_np = BM::parameters::number_of_steiner_points(steiner_points,
+                            BM::parameters::number_of_input_triangles(meshed_triangles,
+                            BM::parameters::number_of_input_triangles_kept_whole(kept_whole)));
+  auto quality = report.surfaces_remeshed
+                   ? BM::compute_c3t3_quality(c3t3, BM::parameters::facet_input_min_angle(
+                                                      BM::Corner_forced_facet_angle<BM::Mesh_complex_3<K> >(rr), quality_np))
+                   : BM::compute_c3t3_quality(c3t3, quality_np);
+  if(report.surfaces_remeshed) quality.surface_angle_source = "boundary facets, or the input corner forcing them";
   for(auto& rq : quality.regions)
     if(rq.region >= 1 && std::size_t(rq.region) <= model.number_of_regions())
       rq.name = model.region(std::size_t(rq.region)).name;

@@ -427,6 +427,8 @@ import json,re
 q=json.load(open('$tmp/qr.json'))
 assert any(r.get('name') == 'Cube' for r in q['regions']), q['regions']
 assert abs(q['all']['volume'] - 1.) <= 1e-9, q['all']['volume']
+# a facet on a re-meshed triangle that an input corner forces thin counts with the corner's angle
+assert q['surface_angle_source'] == 'boundary facets, or the input corner forcing them', q['surface_angle_source']
 m=re.search(r'min angle ([0-9.e+-]+) -> ([0-9.e+-]+) deg \((\d+) triangles under 25 deg', open('$tmp/out').read())
 assert m, 'no remeshing line'
 assert float(m.group(1)) < 1. and float(m.group(2)) >= 25. and int(m.group(3)) == 0, m.group(0)

@@ -8,6 +8,7 @@
 // checked here: volumes, curves, conformity (the output validates), angles,
 // edge lengths against the target, points on the input.
 
+#include <CGAL/Bubble_mesh_3/Corner_forced_facet_angle.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
 #include <CGAL/Bubble_mesh_3/IO/read_geological_model.h>
 #include <CGAL/Bubble_mesh_3/Remeshing_sizing_field.h>
@@ -946,6 +947,40 @@ void test_ribbon()
             << r.number_of_small_angle_triangles_in_sharp_wedges << " in it by the report\n";
   assert(spanning > 0 && spanning == small);
   assert(r.number_of_small_angle_triangles_in_sharp_wedges == spanning);
+
+  // each of them is listed with the corner's own angle, atan(1/20) = 2.86 degrees
+  const double corner = std::atan(0.05) * 180. / CGAL_PI;
+  assert(r.corner_forced_triangles.size() == spanning);
+  for(const auto& cf : r.corner_forced_triangles)
+  {
+    assert(output.patch_of_triangle(cf.triangle) == strip && std::abs(cf.corner_angle - corner) < 1e-6);
+    for(int k = 0; k < 3; ++k)
+      assert(output.point(output.triangle(cf.triangle)[std::size_t(k)]) ==
+             Point(cf.points[std::size_t(k)][0], cf.points[std::size_t(k)][1], cf.points[std::size_t(k)][2]));
+  }
+  // and a tetrahedral mesh's facet on one of them (its corners in another order)
+  // counts with that angle, any other facet with its own
+  struct Vertex { Point p; const Point& point() const { return p; } };
+  struct Cell { std::array<const Vertex*, 4> v; const Vertex* vertex(int k) const { return v[std::size_t(k)]; } };
+  struct Complex { typedef std::pair<const Cell*, int> Facet; };
+  const BM::Corner_forced_facet_angle<Complex> facet_angle(r);
+  // (the widest of them: the ones at the tip are as sharp as the corner)
+  const auto& cf = *std::max_element(r.corner_forced_triangles.begin(), r.corner_forced_triangles.end(),
+                                     [&](const auto& x, const auto& y) {
+                                       return min_angle(output, x.triangle) < min_angle(output, y.triangle);
+                                     });
+  auto at = [&](int k) { return Vertex{Point(cf.points[std::size_t(k)][0], cf.points[std::size_t(k)][1], cf.points[std::size_t(k)][2])}; };
+  const Vertex a = at(0), b2 = at(1), c = at(2);
+  // the apex makes an equilateral triangle with a and b2, which is in no wedge
+  const K::Vector_3 ab = b2.p - a.p, up = CGAL::cross_product(ab, K::Vector_3(0, 0, 1));
+  const Vertex apex{CGAL::midpoint(a.p, b2.p) + up * (0.866 * std::sqrt(ab.squared_length() / up.squared_length()))};
+  const Cell cell{{{&apex, &c, &a, &b2}}};
+  const double own = min_angle(output, cf.triangle);
+  std::cout << "  a facet on a wedge triangle of " << own << " degrees counts " << facet_angle(Complex::Facet(&cell, 0))
+            << " (the corner " << corner << ")\n";
+  assert(own > corner + 1. && std::abs(facet_angle(Complex::Facet(&cell, 0)) - corner) < 1e-6);
+  const double side = facet_angle(Complex::Facet(&cell, 1)); // apex, a, b2
+  assert(side > 59. && side < 61.);
 }
 
 // A free vertex crowded against a curve edge: a hexagon of fixed points

@@ -109,6 +109,20 @@ struct Surface_remeshing_report
   /// the other triangles under the bound (output triangle indices): the ones
   /// the input does not explain
   std::vector<std::size_t> small_angle_triangles_outside_sharp_wedges;
+  /// A triangle under the bound that an input corner forces (see
+  /// `number_of_small_angle_triangles_in_sharp_wedges`): its output index and
+  /// the corner's own angle, the patch's angle between its two curves there.
+  struct Corner_forced_triangle
+  {
+    std::size_t triangle;  ///< output triangle index
+    double corner_angle;   ///< degrees
+    std::array<std::array<double, 3>, 3> points; ///< its corners (the output's coordinates, in its order)
+  };
+  /// the triangles counted by `number_of_small_angle_triangles_in_sharp_wedges`,
+  /// by increasing index: a tetrahedron against one is thin because of the
+  /// input's corner, which the quality report can tell (`make_bubble_mesh_3()`
+  /// gives each boundary facet the smaller of its own angle and its corner's)
+  std::vector<Corner_forced_triangle> corner_forced_triangles;
   double share_of_small_angle_triangles = 0.; ///< output triangles with an angle under the bound, share
   double share_of_edges_within_size = 0.;     ///< output edges with length in [0.5, 1.5] of the target there
   double input_share_of_edges_within_size = 0.; ///< the same for the input edges and the same targets
@@ -1097,6 +1111,7 @@ private:
 struct Sharp_sector
 {
   std::size_t tip, patch, side0, side1;
+  double angle; // the patch's angle at the tip, degrees
 };
 
 // The triangles (sorted) of a sharp sector's patch whose three points lie on
@@ -1104,11 +1119,11 @@ struct Sharp_sector
 // curve from the tip until a point where other curves meet it, or where it
 // turns back (the other tip of a lens), with a point on each side.
 template <class GeomTraits>
-std::vector<std::size_t> triangles_in_sharp_wedges(const Geological_model_3<GeomTraits>& output,
-                                                   const Edge_set& curve_edges,
-                                                   const std::vector<Sharp_sector>& sectors)
+std::vector<std::pair<std::size_t, double> > triangles_in_sharp_wedges(const Geological_model_3<GeomTraits>& output,
+                                                                      const Edge_set& curve_edges,
+                                                                      const std::vector<Sharp_sector>& sectors)
 {
-  if(sectors.empty()) return std::vector<std::size_t>();
+  if(sectors.empty()) return std::vector<std::pair<std::size_t, double> >();
   std::map<std::size_t, std::vector<std::size_t> > next; // curve point -> its curve neighbours
   for(const auto& e : curve_edges)
   {
@@ -1138,12 +1153,13 @@ std::vector<std::size_t> triangles_in_sharp_wedges(const Geological_model_3<Geom
       }
     }
   }
-  std::vector<std::size_t> result;
+  std::vector<std::pair<std::size_t, double> > result;
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
   {
     const auto& tri = output.triangle(t);
     const auto i0 = on_wedge.find(tri[0]);
     if(i0 == on_wedge.end()) continue;
+    double angle = std::numeric_limits<double>::infinity(); // the sharpest wedge it lies in
     for(const auto& m0 : i0->second)
     {
       if(sectors[m0.first].patch != output.patch_of_triangle(t)) continue;
@@ -1162,12 +1178,9 @@ std::vector<std::size_t> triangles_in_sharp_wedges(const Geological_model_3<Geom
           }
         found += on ? 1 : 0;
       }
-      if(found == 3 && sides == 3)
-      {
-        result.push_back(t);
-        break;
-      }
+      if(found == 3 && sides == 3) angle = (std::min)(angle, sectors[m0.first].angle);
     }
+    if(angle < std::numeric_limits<double>::infinity()) result.push_back(std::make_pair(t, angle));
   }
   return result;
 }
@@ -1252,16 +1265,18 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
             if(w != v && curve_edges.count(edge_key(v, w)) &&
                std::find(starts.begin(), starts.end(), w) == starts.end())
               starts.push_back(w);
-      if(starts.size() == 2) sharp_sectors.push_back(Sharp_sector{v, a.first.second, starts[0], starts[1]});
+      if(starts.size() == 2) sharp_sectors.push_back(Sharp_sector{v, a.first.second, starts[0], starts[1], g.second});
     }
   }
-  const std::vector<std::size_t> in_sharp_wedge = triangles_in_sharp_wedges(output, curve_edges, sharp_sectors);
+  const std::vector<std::pair<std::size_t, double> > in_sharp_wedge =
+    triangles_in_sharp_wedges(output, curve_edges, sharp_sectors);
   report.min_angle = 180.;
   report.number_of_small_angle_triangles = 0;
   report.number_of_forced_small_angle_triangles = 0;
   report.number_of_small_angle_triangles_between_curve_points = 0;
   report.number_of_small_angle_triangles_in_sharp_wedges = 0;
   report.small_angle_triangles_outside_sharp_wedges.clear();
+  report.corner_forced_triangles.clear();
   for(std::size_t t = 0; t < output.number_of_triangles(); ++t)
   {
     const double a = triangle_min_angle(output, t);
@@ -1277,8 +1292,21 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
     const auto it = sector.find(std::make_pair(t, output.triangle(t)[k_min]));
     const bool forced = it != sector.end() && it->second < bound;
     if(forced) ++report.number_of_forced_small_angle_triangles;
-    if(forced || std::binary_search(in_sharp_wedge.begin(), in_sharp_wedge.end(), t))
+    const auto w = std::lower_bound(in_sharp_wedge.begin(), in_sharp_wedge.end(),
+                                    std::make_pair(t, -std::numeric_limits<double>::infinity()));
+    const bool in_wedge = w != in_sharp_wedge.end() && w->first == t;
+    if(forced || in_wedge)
+    {
       ++report.number_of_small_angle_triangles_in_sharp_wedges;
+      const double corner = (std::min)(forced ? it->second : 180., in_wedge ? w->second : 180.);
+      Surface_remeshing_report::Corner_forced_triangle cf{t, corner, {}};
+      for(int k = 0; k < 3; ++k)
+      {
+        const auto& q = output.point(output.triangle(t)[std::size_t(k)]);
+        cf.points[std::size_t(k)] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+      }
+      report.corner_forced_triangles.push_back(cf);
+    }
     else
       report.small_angle_triangles_outside_sharp_wedges.push_back(t);
   }
