@@ -852,11 +852,15 @@ int main(int argc, char** argv)
   const auto quality_np = BM::parameters::number_of_steiner_points(steiner_points,
                             BM::parameters::number_of_input_triangles(meshed_triangles,
                             BM::parameters::number_of_input_triangles_kept_whole(kept_whole)));
-  auto quality = report.surfaces_remeshed
-                   ? BM::compute_c3t3_quality(c3t3, BM::parameters::facet_input_min_angle(
-                                                      BM::Corner_forced_facet_angle<BM::Mesh_complex_3<K> >(rr), quality_np))
-                   : BM::compute_c3t3_quality(c3t3, quality_np);
-  if(report.surfaces_remeshed) quality.surface_angle_source = "boundary facets, or the input corner forcing them";
+  BM::Mesh_quality_report quality;
+  if(report.surfaces_remeshed)
+  {
+    quality = BM::compute_c3t3_quality(c3t3, BM::parameters::facet_input_min_angle(
+                                               BM::Corner_forced_facet_angle<BM::Mesh_complex_3<K> >(rr), quality_np));
+    quality.surface_angle_source = "boundary facets, or the input corner forcing them";
+  }
+  else
+    quality = BM::compute_c3t3_quality(c3t3, quality_np);
   for(auto& rq : quality.regions)
     if(rq.region >= 1 && std::size_t(rq.region) <= model.number_of_regions())
       rq.name = model.region(std::size_t(rq.region)).name;

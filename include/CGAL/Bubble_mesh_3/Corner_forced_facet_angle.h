@@ -73,9 +73,6 @@ public:
     return it == corner_angles_.end() ? own : (std::min)(own, it->second);
   }
 
-  /// how many triangles the facets are matched against
-  std::size_t number_of_corner_forced_triangles() const { return corner_angles_.size(); }
-
 private:
   typedef std::array<std::array<double, 3>, 3> Key;
   std::map<Key, double> corner_angles_;

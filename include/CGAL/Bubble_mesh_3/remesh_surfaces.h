@@ -120,7 +120,7 @@ struct Surface_remeshing_report
   };
   /// the triangles counted by `number_of_small_angle_triangles_in_sharp_wedges`,
   /// by increasing index: a tetrahedron against one is thin because of the
-  /// input's corner, which the quality report can tell (`make_bubble_mesh_3()`
+  /// input's corner, which the quality report can tell (`Corner_forced_facet_angle`
   /// gives each boundary facet the smaller of its own angle and its corner's)
   std::vector<Corner_forced_triangle> corner_forced_triangles;
   double share_of_small_angle_triangles = 0.; ///< output triangles with an angle under the bound, share
@@ -1114,7 +1114,8 @@ struct Sharp_sector
   double angle; // the patch's angle at the tip, degrees
 };
 
-// The triangles (sorted) of a sharp sector's patch whose three points lie on
+// The triangles (sorted, each with the smallest angle of the sectors whose
+// wedge holds it) of a sharp sector's patch whose three points lie on
 // the sector's wedge: its tip and its two sides, each followed along the
 // curve from the tip until a point where other curves meet it, or where it
 // turns back (the other tip of a lens), with a point on each side.
