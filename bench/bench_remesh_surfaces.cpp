@@ -8,10 +8,11 @@
 // new triangles to the input gives, curve Hausdorff distance, validity of
 // the output (conforming, closed oriented regions, no crossing) and time.
 //
-// Usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--balance-volumes] MODEL [MODEL ...]
+// Usage: bench_remesh_surfaces [--details] [--size L] [--min-size L] [--refine-ribbons] [--balance-volumes] MODEL [MODEL ...]
 //   (default: the bundled model and every ../shared/data/geomodels model of issue 9)
 //   --details  also lists the triangles under 25 degrees outside the wedges of sharp input corners,
 //              and the validation problems of an invalid output
+//   --min-size L  the thickness rule's floor (minimum_edge_length(L); default a tenth of the smallest patch size)
 //   --refine-ribbons  the sizing field's ribbon rule (refine_ribbons(true))
 //   --balance-volumes  slide the free points until every region has its input volume (keep_region_volumes(true))
 
@@ -139,18 +140,19 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
 int main(int argc, char** argv)
 {
   bool show_details = false, ribbons = false, balance = false;
-  double size = 0.;
+  double size = 0., min_size = 0.;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if(a == "--details") show_details = true;
     else if(a == "--size" && i + 1 < argc) size = std::atof(argv[++i]);
+    else if(a == "--min-size" && i + 1 < argc) min_size = std::atof(argv[++i]);
     else if(a == "--refine-ribbons") ribbons = true;
     else if(a == "--balance-volumes") balance = true;
     else if(a == "--help" || a == "-h")
     {
-      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--refine-ribbons] [--balance-volumes] [MODEL ...]\n";
+      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--min-size L] [--refine-ribbons] [--balance-volumes] [MODEL ...]\n";
       return EXIT_SUCCESS;
     }
     else files.push_back(a);
@@ -192,14 +194,15 @@ int main(int argc, char** argv)
     if(show_details)
       field.reset(new BM::Remeshing_sizing_field<K>(input, BM::detect_model_features(input),
                                                     BM::parameters::elements_across_thickness(0.)));
+    // a size or a floor is a named parameter only when given: its absence selects the default
+    auto remesh = [&](const auto& np) {
+      return size > 0. ? BM::remesh_surfaces(input, output, BM::parameters::edge_length(size, np))
+                       : BM::remesh_surfaces(input, output, np);
+    };
+    const auto np = BM::parameters::sizing_field_output(field.get(), BM::parameters::refine_ribbons(ribbons,
+                                                        BM::parameters::keep_region_volumes(balance)));
     const BM::Surface_remeshing_report r =
-      size > 0. ? BM::remesh_surfaces(input, output,
-                                      BM::parameters::sizing_field_output(field.get(), BM::parameters::edge_length(size,
-                                                                          BM::parameters::refine_ribbons(ribbons,
-                                                                          BM::parameters::keep_region_volumes(balance)))))
-                : BM::remesh_surfaces(input, output,
-                                      BM::parameters::sizing_field_output(field.get(), BM::parameters::refine_ribbons(ribbons,
-                                                                          BM::parameters::keep_region_volumes(balance))));
+      min_size > 0. ? remesh(BM::parameters::minimum_edge_length(min_size, np)) : remesh(np);
     const std::vector<std::string> problems = BM::geological_model_problems(output);
     const std::vector<double> bound = volume_change_bounds(input, output);
     // the worst region against its bound

@@ -144,6 +144,12 @@ const char* usage_text =
 "                             tetrahedra and a faster run; 0 turns the rule off). If\n"
 "                             the surfaces it refined cannot be recovered (a pinch-out),\n"
 "                             they are re-meshed with N/2, then 0\n"
+"  --min-size S               with --remesh-surfaces: the shortest edge the thickness rule\n"
+"                             may ask for, in model units or S% of the diagonal (default\n"
+"                             a tenth of the smallest surface size). Where surfaces come\n"
+"                             closer than that (a layer squeezed thin, a fault passing\n"
+"                             just by a horizon) tetrahedra are flat across the gap; a\n"
+"                             smaller S resolves the gap, with many more tetrahedra\n"
 "  --size-grading G           with --remesh-surfaces: largest ratio between the sizes of\n"
 "                             neighbouring edges (default 1.5, above 1). Nearer 1 the\n"
 "                             sizes change more slowly away from thin layers and small\n"
@@ -244,6 +250,7 @@ struct Options
   bool tilted_size_factor_given = false;
   double size = 0.;          // absolute target edge length (0: not given)
   double relative_size = 0.; // fraction of the bounding-box diagonal (0: not given)
+  double min_size = 0., relative_min_size = 0.; // --min-size, as --size (0: not given)
   // edges across a thin layer: Remeshing_sizing_field's elements_across_thickness
   double layer_elements = BM::Remeshing_sizing_field<K>::default_elements_across_thickness;
   bool layer_elements_given = false;
@@ -296,6 +303,18 @@ std::size_t parse_count(const std::string& opt, const std::string& s, const std:
   if(!(n >= 0.) || n != std::floor(n) || n > most)
     usage_error(opt + " takes a number of " + what + " from 0 to " + std::to_string(long(most)) + ", got '" + s + "'");
   return std::size_t(n);
+}
+
+// a length of --size and --min-size: in model units, or "S%" of the bounding-box
+// diagonal, stored as a fraction in `relative` (the other one stays 0)
+void parse_length(const std::string& opt, std::string s, double& absolute, double& relative)
+{
+  const std::string given = s;
+  const bool percent = !s.empty() && s.back() == '%';
+  if(percent) s.pop_back();
+  const double x = parse_double(opt, s);
+  if(!(x > 0.) || !std::isfinite(x)) usage_error(opt + " must be a positive number, got '" + given + "'");
+  (percent ? relative : absolute) = percent ? x / 100. : x;
 }
 
 // NAME=F of --region-size-factor and --surface-size-factor (the name may hold '=': split at the last)
@@ -360,15 +379,8 @@ Options parse_options(int argc, char** argv)
       o.tilted_size_factor = parse_double(a, value(a));
       o.tilted_size_factor_given = true;
     }
-    else if(a == "--size")
-    {
-      std::string v = value(a);
-      const bool relative = !v.empty() && v.back() == '%';
-      if(relative) v.pop_back();
-      const double x = parse_double(a, v);
-      if(!(x > 0.) || !std::isfinite(x)) usage_error("--size must be a positive number, got '" + args[i] + "'");
-      (relative ? o.relative_size : o.size) = relative ? x / 100. : x;
-    }
+    else if(a == "--size") parse_length(a, value(a), o.size, o.relative_size);
+    else if(a == "--min-size") parse_length(a, value(a), o.min_size, o.relative_min_size);
     else if(a == "--layer-elements")
     {
       const double n = parse_double(a, value(a));
@@ -430,6 +442,8 @@ Options parse_options(int argc, char** argv)
                 "nothing with " + std::string(o.keep_input_triangles ? "--keep-input-triangles" : "--planar-angle-bound 0"));
   if(o.layer_elements_given && !o.remesh_surfaces)
     usage_error("--layer-elements is a rule of --remesh-surfaces: give both");
+  if((o.min_size > 0. || o.relative_min_size > 0.) && !o.remesh_surfaces)
+    usage_error("--min-size is the floor of a rule of --remesh-surfaces: give both");
   if(o.size_grading_given && !o.remesh_surfaces)
     usage_error("--size-grading is a rule of --remesh-surfaces: give both");
   if(o.curvature_angle_given && !o.remesh_surfaces)
@@ -821,8 +835,14 @@ int main(int argc, char** argv)
         BM::make_bubble_mesh_3(model, c3t3, BM::parameters::relative_edge_length(opt.relative_size, with_law));
       else BM::make_bubble_mesh_3(model, c3t3, with_law);
     };
-    if(opt.repulsive_force) mesh(BM::parameters::force_law(BM::Repulsive_bubble_force(), np));
-    else mesh(np);
+    // so is the thickness rule's floor (its default is a tenth of the smallest patch size)
+    const double floor = opt.min_size > 0. ? opt.min_size : opt.relative_min_size * BM::bbox_diagonal(model);
+    auto mesh_with_floor = [&](const auto& with_law) {
+      if(floor > 0.) mesh(BM::parameters::minimum_edge_length(floor, with_law));
+      else mesh(with_law);
+    };
+    if(opt.repulsive_force) mesh_with_floor(BM::parameters::force_law(BM::Repulsive_bubble_force(), np));
+    else mesh_with_floor(np);
     stage_timer.stop();
   }
   catch(const std::exception& e)
@@ -916,8 +936,8 @@ int main(int argc, char** argv)
                 << " (here down to " << rr.smallest_thickness
                 << ": a pinch-out's tip, or a layer thinner than that all along), its tetrahedra are flat (at the thinnest, "
                 << rr.smallest_thickness_size / rr.smallest_thickness
-                << " times wider than thick); a smaller --size, or --region-size-factor for that layer, lowers the floor "
-                   "(many more tetrahedra)\n"
+                << " times wider than thick); --min-size lowers the floor everywhere, --region-size-factor for that "
+                   "layer lowers it and the layer's size (many more tetrahedra)\n"
                 << std::defaultfloat;
     // new triangles are chords across the input's creases: on a curved, coarsely
     // faceted surface (a tunnel of 16 facets) that changes a region's volume by
@@ -1048,7 +1068,8 @@ int main(int argc, char** argv)
                         // a region factor lowers both there without refining the rest of the model
                         ? "give that region a size factor under 1 (e.g. --region-size-factor '" +
                             model.region(bare[0]).name + "=0.3': its surfaces get finer, and so does the floor of the "
-                            "thickness rule, a tenth of the smallest surface size; many more tetrahedra), or a smaller --size"
+                            "thickness rule, a tenth of the smallest surface size; many more tetrahedra), a --min-size under that "
+                            "floor, or a smaller --size"
                         : std::string("re-mesh the surfaces at a smaller size (--remesh-surfaces --size S, e.g. --size 2% for edges of 2 % of the model's diagonal)"))
                   << "\n";
       }

@@ -468,6 +468,16 @@ check "thin slab above the rule's floor: no flat-layer note" test -z "$(echo "$o
 run "$tmp/slab.obj" --remesh-surfaces --size 200% --no-sliver-removal --threads 2
 check "thin slab well under the rule's floor: the note gives the floor" contains "$out" "note: edges stop at 0.28"
 check "... and says the slab's tetrahedra are flat" contains "$out" "(here down to 0.1: a pinch-out's tip, or a layer thinner than that all along), its tetrahedra are flat"
+# --min-size lowers the floor: at 0.1 the rule's 0.1 / 1.63 stops at 0.1, no longer 0.28
+run "$tmp/slab.obj" --remesh-surfaces --size 200% --min-size 0.1 --no-sliver-removal --threads 2
+check "--min-size 0.1 exits 0" test "$rc" -eq 0
+check "--min-size 0.1: the thickness rule's edges stop at 0.1" contains "$out" "make edges as short as 0.1 there"
+check "--min-size 0.1: no flat-layer note (the floor is the slab's thickness)" test -z "$(echo "$out" | grep 'note: edges stop at')"
+run "$tmp/slab.obj" --min-size 0.1
+check "--min-size without --remesh-surfaces exits 2" test "$rc" -eq 2
+check "--min-size without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
+run "$tmp/slab.obj" --remesh-surfaces --min-size 0
+check "--min-size 0 exits 2" test "$rc" -eq 2
 echo "  slab re-meshed triangles with 0 / 1 / 1.63 (default) edges across: $n0 / $n1 / $n2"
 check "--layer-elements: finer with more edges across a thin layer" \
   test -n "$n0" -a -n "$n1" -a -n "$n2" -a "${n0:-0}" -lt "${n1:-0}" -a "${n1:-0}" -lt "${n2:-0}"

@@ -1099,6 +1099,39 @@ void test_smooth_to_best_place()
   assert(got >= grid_best - 0.5);
 }
 
+// A free vertex pushed past its ring, so that two of its six triangles face
+// the other way (slivers of a chart mapped back onto a wrinkled input patch:
+// modelA5's h1_2 with the thickness rule's floor at 7 or 8). Moves that keep
+// them turned over slid them over their neighbours, and the re-meshed patch
+// crossed itself; the smoothing must bring the vertex back inside its ring,
+// every triangle facing the side most of them face.
+void test_smooth_turns_triangles_back()
+{
+  std::cout << "a free vertex outside its ring\n";
+  const Model plane = square_patch(5.);
+  const BM::internal::Remesh_triangle_tree<K> tree(plane, std::vector<std::size_t>{0, 1});
+  std::vector<Point> pts;
+  for(int k = 0; k < 6; ++k) pts.push_back(Point(std::cos(k * CGAL_PI / 3.), std::sin(k * CGAL_PI / 3.), 0));
+  pts.push_back(Point(1.3, 0.1, 0));
+  std::vector<std::array<std::size_t, 3> > tris;
+  for(std::size_t k = 0; k < 6; ++k) tris.push_back({{6, k, (k + 1) % 6}});
+  std::vector<char> fixed(pts.size(), 1);
+  fixed[6] = 0;
+  auto turned_over = [&]() {
+    int n = 0;
+    for(const auto& t : tris)
+      n += CGAL::orientation(K::Point_2(pts[t[0]].x(), pts[t[0]].y()), K::Point_2(pts[t[1]].x(), pts[t[1]].y()),
+                             K::Point_2(pts[t[2]].x(), pts[t[2]].y())) != CGAL::LEFT_TURN;
+    return n;
+  };
+  const int before = turned_over();
+  BM::internal::smooth_free_vertices<K>(pts, tris, fixed, tree, 30.);
+  std::cout << "  triangles turned over " << before << " -> " << turned_over() << ", vertex at " << pts[6] << "\n";
+  assert(before == 2);
+  assert(turned_over() == 0);
+  assert(pts[6].z() == 0.);
+}
+
 // A triangle under 25 degrees between three curve samples (fixed points) -
 // a strip's sides sampled closer than its width, modelA2's last one - is
 // split across its longest free edge when the new point can lift the four
@@ -1267,6 +1300,7 @@ int main(int argc, char** argv)
   test_ribbon();
   test_collapse_crowded_vertex();
   test_smooth_to_best_place();
+  test_smooth_turns_triangles_back();
   test_split_fixed_triangle();
   test_thin_layer_sides(0.2);
   test_thin_layer_sides(0.1);

@@ -184,6 +184,11 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
     candidates.push_back(centre);
     if(old_min < angle_goal) candidates.push_back(CGAL::midpoint(centre, points[v]));
     const Point_3 old = points[v];
+    // the side of the patch the star around v faces: a triangle facing the
+    // other way (a sliver turned over where the input patch is wrinkled) must
+    // face it again, or a move could slide it over its neighbours
+    Vector_3 star(0, 0, 0);
+    for(const Vector_3& n : old_normals) star = star + n;
     // the smallest angle around v at the patch point nearest to c, or -1 if a triangle turns over
     auto smallest_angle_at = [&](const Point_3& c) {
       points[v] = patch_tree.closest_point(c);
@@ -193,7 +198,8 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
         const auto& tri = triangles[inc[i]];
         new_min = (std::min)(new_min, min_angle_degrees(points[tri[0]], points[tri[1]], points[tri[2]]));
         const Vector_3 n = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
-        if(!(CGAL::to_double(n * old_normals[i]) > 0.5)) return -1.;
+        if(!(CGAL::to_double(n * star) > 0.)) return -1.;
+        if(CGAL::to_double(old_normals[i] * star) > 0. && !(CGAL::to_double(n * old_normals[i]) > 0.5)) return -1.;
       }
       return new_min;
     };
