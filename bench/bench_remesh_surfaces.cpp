@@ -208,8 +208,7 @@ int main(int argc, char** argv)
     // the worst region against its bound
     double worst_bound = 0.;
     for(std::size_t i = 1; i < r.input_volumes.size(); ++i)
-      if(std::abs(r.output_volumes[i] - r.input_volumes[i]) / std::abs(r.input_volumes[i]) >=
-         r.max_relative_volume_error * (1. - 1e-12))
+      if(std::abs(r.relative_volume_change(i)) >= r.max_relative_volume_error * (1. - 1e-12))
         worst_bound = bound[i] / std::abs(r.input_volumes[i]);
     std::ostringstream row;
     row << std::setprecision(3);
@@ -230,7 +229,7 @@ int main(int argc, char** argv)
                 << "    volume error before balancing " << r.volume_error_before_balancing << ", "
                 << r.number_of_volume_balancing_steps << " steps, " << r.number_of_volume_balancing_points
                 << " points moved, farthest " << r.largest_volume_balancing_move << " sizes, "
-                << r.number_of_regions_not_balanced << " regions left out, " << r.time_volume_balance << " s, "
+                << r.regions_not_balanced.size() << " regions left out, " << r.time_volume_balance << " s, "
                 << r.number_of_faceted_patches << " faceted surfaces re-meshed with their creases\n";
       for(const std::string& p : problems) std::cout << "    problem: " << p << "\n";
       details(output, r, *field);

@@ -902,15 +902,14 @@ int main(int argc, char** argv)
       if(rr.number_of_volume_balancing_steps > 0)
         std::cout << " (" << rr.volume_error_before_balancing << " before " << rr.number_of_volume_balancing_points
                   << " points slid along the input surfaces)";
-      if(rr.number_of_regions_not_balanced > 0 && opt.balance_volumes)
+      if(!rr.regions_not_balanced.empty() && opt.balance_volumes)
       {
         // what the balance gave the others: the largest change alone would read as if it failed everywhere
         double others = 0.;
-        for(std::size_t r = 1; r < rr.input_volumes.size() && r < rr.output_volumes.size(); ++r)
-          if(rr.input_volumes[r] != 0. &&
-             !std::binary_search(rr.regions_not_balanced.begin(), rr.regions_not_balanced.end(), r))
-            others = (std::max)(others, std::abs(rr.output_volumes[r] - rr.input_volumes[r]) / std::abs(rr.input_volumes[r]));
-        const std::size_t left = rr.number_of_regions_not_balanced;
+        for(std::size_t r = 1; r < rr.input_volumes.size(); ++r)
+          if(!std::binary_search(rr.regions_not_balanced.begin(), rr.regions_not_balanced.end(), r))
+            others = (std::max)(others, std::abs(rr.relative_volume_change(r)));
+        const std::size_t left = rr.regions_not_balanced.size();
         std::cout << " (" << left << (left == 1 ? " region" : " regions") << " left out of the volume balance";
         if(left + 1 < rr.input_volumes.size()) std::cout << "; the others changed by at most " << others;
         std::cout << ")";
@@ -945,11 +944,8 @@ int main(int argc, char** argv)
     if(report.surfaces_remeshed)
     {
       std::vector<std::pair<double, std::size_t> > changed;
-      for(std::size_t r = 1; r < rr.input_volumes.size() && r < rr.output_volumes.size(); ++r)
-      {
-        const double change = (rr.output_volumes[r] - rr.input_volumes[r]) / std::abs(rr.input_volumes[r]);
-        if(std::abs(change) > 0.01) changed.push_back(std::make_pair(change, r));
-      }
+      for(std::size_t r = 1; r < rr.input_volumes.size(); ++r)
+        if(std::abs(rr.relative_volume_change(r)) > 0.01) changed.push_back(std::make_pair(rr.relative_volume_change(r), r));
       std::sort(changed.begin(), changed.end(), [](const std::pair<double, std::size_t>& a,
                                                   const std::pair<double, std::size_t>& b) {
         return std::abs(a.first) > std::abs(b.first);

@@ -139,6 +139,13 @@ struct Surface_remeshing_report
 
   std::vector<double> input_volumes;  ///< `region_volumes()` of the input (entry 0: whole model)
   std::vector<double> output_volumes; ///< `region_volumes()` of the output
+  /// signed change of region `r`'s volume over its input volume (0 for a
+  /// region of no volume, or beyond the volumes)
+  double relative_volume_change(std::size_t r) const
+  {
+    if(r >= input_volumes.size() || r >= output_volumes.size() || input_volumes[r] == 0.) return 0.;
+    return (output_volumes[r] - input_volumes[r]) / std::abs(input_volumes[r]);
+  }
   double max_relative_volume_error = 0.; ///< largest |output - input| / input over the regions 1..n
   /// `max_relative_volume_error` before the free points slid along the input
   /// surface to give every region its volume back (`keep_region_volumes`)
@@ -150,7 +157,6 @@ struct Surface_remeshing_report
   /// regions left out of the balancing because slides could not give their
   /// volume back (a convex body faceted coarsely, whose chords all cut into
   /// it, or a region none of whose points may move)
-  std::size_t number_of_regions_not_balanced = 0;
   std::vector<std::size_t> regions_not_balanced; ///< those regions, in increasing order
   /// patches re-meshed again with every crease kept as a curve, so that the
   /// regions they bound keep their volume (those regions could not be
@@ -994,7 +1000,6 @@ private:
     not_balanced_.clear();
     for(std::size_t r = 1; r < balanced.size(); ++r)
       if(!balanced[r]) not_balanced_.push_back(r);
-    report_.number_of_regions_not_balanced = not_balanced_.size();
     report_.regions_not_balanced = not_balanced_;
     report_.time_volume_balance = timer.time();
   }
@@ -1412,10 +1417,8 @@ void measure_remeshing(const Geological_model_3<GeomTraits>& input, const Geolog
   report.output_volumes = region_volumes(output);
   report.max_relative_volume_error = 0.;
   for(std::size_t r = 1; r < report.input_volumes.size(); ++r)
-    if(report.input_volumes[r] != 0.)
-      report.max_relative_volume_error =
-        (std::max)(report.max_relative_volume_error,
-                   std::abs(report.output_volumes[r] - report.input_volumes[r]) / std::abs(report.input_volumes[r]));
+    report.max_relative_volume_error =
+      (std::max)(report.max_relative_volume_error, std::abs(report.relative_volume_change(r)));
 }
 
 } // namespace internal
@@ -1485,7 +1488,7 @@ and no more triangles fall under the angle bound less 5 degrees
 fault-and-tunnel model's tunnel goes from 1.9e-2 to 2.4e-8, a salt dome from
 2.0e-2 to 3e-14, each with twice the tetrahedra. Regions neither way
 reaches are left as the chords make them
-(`Surface_remeshing_report::number_of_regions_not_balanced`), and so is a
+(`Surface_remeshing_report::regions_not_balanced`), and so is a
 region none of whose points may move; where the outer walls are flat, what
 it lost went to the others, which share it in proportion to their volumes.
 The balance is off by default: the tetrahedra keep every median with it, but
