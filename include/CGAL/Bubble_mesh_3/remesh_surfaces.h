@@ -1041,7 +1041,8 @@ private:
     for(std::size_t r = 1; r < in_.regions().size(); ++r) output.add_region(in_.region(r).name);
     for(std::size_t p = 0; p < in_.number_of_patches(); ++p)
       output.add_patch(in_.patch(p).name, in_.patch(p).positive_region, in_.patch(p).negative_region);
-    output.set_file_name(in_.file_name());
+    // its triangles are new: an error about one must not read as if it were the input file's
+    output.set_file_name(in_.file_name().empty() ? std::string() : in_.file_name() + " (re-meshed)");
     for(const Point_3& q : out_points_) output.add_point(q);
     for(std::size_t p = 0; p < patch_out_.size(); ++p)
       for(const Triangle& t : patch_out_[p]) output.add_triangle(t[0], t[1], t[2], p);
