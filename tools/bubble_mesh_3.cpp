@@ -581,6 +581,12 @@ std::vector<double> factors_by_patch(const BM::Geological_model_3<K>& model, con
   return f;
 }
 
+// the thickness rule's floor that --min-size gives, in model units (0: not given)
+double given_min_size(const Options& o, const BM::Geological_model_3<K>& model)
+{
+  return o.min_size > 0. ? o.min_size : o.relative_min_size > 0. ? o.relative_min_size * BM::bbox_diagonal(model) : 0.;
+}
+
 // The mesh has at least about V / (0.118 h^3) tetrahedra for a region of volume V
 // at size h (re-meshed, the re-meshing size; kept, the region's median edge; times
 // its --region-size-factor) (regular ones of edge h fill it; a uniform packing gives
@@ -836,7 +842,7 @@ int main(int argc, char** argv)
       else BM::make_bubble_mesh_3(model, c3t3, with_law);
     };
     // so is the thickness rule's floor (its default is a tenth of the smallest patch size)
-    const double floor = opt.min_size > 0. ? opt.min_size : opt.relative_min_size * BM::bbox_diagonal(model);
+    const double floor = given_min_size(opt, model);
     auto mesh_with_floor = [&](const auto& with_law) {
       if(floor > 0.) mesh(BM::parameters::minimum_edge_length(floor, with_law));
       else mesh(with_law);
@@ -929,7 +935,8 @@ int main(int argc, char** argv)
                    "with 0 the rule is off\n"
                 << std::defaultfloat;
     // well below the rule's floor a layer is crossed by one flat tetrahedron: say where that starts
-    if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size > 2. * rr.smallest_thickness)
+    if(report.surfaces_remeshed && rr.smallest_thickness_size > 0. && rr.smallest_thickness_size < rr.target_size &&
+       rr.smallest_thickness_size > 2. * rr.smallest_thickness)
       std::cout << std::setprecision(4) << "note: edges stop at " << rr.smallest_thickness_size
                 << " (the thickness rule's floor): where a layer is thinner than " << across * rr.smallest_thickness_size
                 << " (here down to " << rr.smallest_thickness
@@ -937,6 +944,13 @@ int main(int argc, char** argv)
                 << rr.smallest_thickness_size / rr.smallest_thickness
                 << " times wider than thick); --min-size lowers the floor everywhere, --region-size-factor for that "
                    "layer lowers it and the layer's size (many more tetrahedra)\n"
+                << std::defaultfloat;
+    // a floor at the target or above leaves the rule nothing to refine: the user meant a finer floor
+    if(report.surfaces_remeshed && given_min_size(opt, model) >= rr.target_size)
+      std::cout << std::setprecision(4) << "note: --min-size " << given_min_size(opt, model)
+                << " is not under the target size " << rr.target_size
+                << ": the thickness rule makes no edge shorter than the target, so thin layers and fault tips are "
+                   "not refined; a --min-size under the target lets it\n"
                 << std::defaultfloat;
     // new triangles are chords across the input's creases: on a curved, coarsely
     // faceted surface (a tunnel of 16 facets) that changes a region's volume by

@@ -473,6 +473,12 @@ run "$tmp/slab.obj" --remesh-surfaces --size 200% --min-size 0.1 --no-sliver-rem
 check "--min-size 0.1 exits 0" test "$rc" -eq 0
 check "--min-size 0.1: the thickness rule's edges stop at 0.1" contains "$out" "make edges as short as 0.1 there"
 check "--min-size 0.1: no flat-layer note (the floor is the slab's thickness)" test -z "$(echo "$out" | grep 'note: edges stop at')"
+check "--min-size 0.1, under the target: no note that the rule refines nothing" \
+  test -z "$(echo "$out" | grep 'is not under the target size')"
+run "$tmp/slab.obj" --remesh-surfaces --size 200% --min-size 3 --no-sliver-removal --threads 2
+check "--min-size over the target size: the note says the rule refines nothing" \
+  contains "$out" "note: --min-size 3 is not under the target size 2.835"
+check "... and no note that edges stop at 3, over the target" test -z "$(echo "$out" | grep 'note: edges stop at')"
 run "$tmp/slab.obj" --min-size 0.1
 check "--min-size without --remesh-surfaces exits 2" test "$rc" -eq 2
 check "--min-size without --remesh-surfaces says so" contains "$err" "--remesh-surfaces"
