@@ -946,8 +946,9 @@ int main(int argc, char** argv)
                    "layer lowers it and the layer's size (many more tetrahedra)\n"
                 << std::defaultfloat;
     // a floor at the target or above leaves the rule nothing to refine: the user meant a finer floor
-    if(report.surfaces_remeshed && given_min_size(opt, model) >= rr.target_size)
-      std::cout << std::setprecision(4) << "note: --min-size " << given_min_size(opt, model)
+    const double min_size = given_min_size(opt, model);
+    if(report.surfaces_remeshed && min_size >= rr.target_size)
+      std::cout << std::setprecision(4) << "note: --min-size " << min_size
                 << " is not under the target size " << rr.target_size
                 << ": the thickness rule makes no edge shorter than the target, so thin layers and fault tips are "
                    "not refined; a --min-size under the target lets it\n"

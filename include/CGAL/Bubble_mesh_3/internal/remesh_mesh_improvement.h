@@ -226,8 +226,7 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
       // hold it back (a free point crowded against a curve sample: one of
       // modelA2's two triangles under 25 degrees, 23.6 before), the best place
       // lies between them.
-      Vector_3 normal(0, 0, 0);
-      for(const Vector_3& n : old_normals) normal = normal + n;
+      Vector_3 normal = star;
       double shortest = std::numeric_limits<double>::infinity();
       for(std::size_t t : inc)
         for(std::size_t w : triangles[t])
