@@ -146,8 +146,19 @@ int main(int argc, char** argv)
   {
     const std::string a = argv[i];
     if(a == "--details") show_details = true;
-    else if(a == "--size" && i + 1 < argc) size = std::atof(argv[++i]);
-    else if(a == "--min-size" && i + 1 < argc) min_size = std::atof(argv[++i]);
+    else if((a == "--size" || a == "--min-size") && i + 1 < argc)
+    {
+      // a length in model units; a typo must not become 0 (the default) silently
+      char* end = nullptr;
+      const double v = std::strtod(argv[++i], &end);
+      if(*argv[i] == '\0' || *end != '\0' || !(v > 0.) || !std::isfinite(v))
+      {
+        std::cerr << "bench_remesh_surfaces: " << a << " takes a positive length in model units, got '" << argv[i]
+                  << "'\n";
+        return 2;
+      }
+      (a == "--size" ? size : min_size) = v;
+    }
     else if(a == "--refine-ribbons") ribbons = true;
     else if(a == "--balance-volumes") balance = true;
     else if(a == "--help" || a == "-h")

@@ -882,8 +882,9 @@ int main(int argc, char** argv)
   if(report.surfaces_remeshed)
   {
     quality = BM::compute_c3t3_quality(c3t3, BM::parameters::facet_input_min_angle(
-                                               BM::Corner_forced_facet_angle<BM::Mesh_complex_3<K> >(rr), quality_np));
-    quality.surface_angle_source = "boundary facets, or the input corner forcing them";
+                                               BM::Corner_forced_facet_angle<BM::Mesh_complex_3<K> >(rr),
+                                               BM::parameters::surface_angle_source(
+                                                 "boundary facets, or the input corner forcing them", quality_np)));
   }
   else
     quality = BM::compute_c3t3_quality(c3t3, quality_np);

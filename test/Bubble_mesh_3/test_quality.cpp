@@ -263,6 +263,16 @@ static void test_report()
   check_near("worst touching surface angle (input)", r.worst_tetrahedra[0].touching_surface_min_angle, 5.);
   check_near("share under 10 unexplained, forced by input", r.all.share_under_10_not_at_small_surface_angle, 0.);
   check_near("corner touching surface angle", r.worst_tetrahedra[1].touching_surface_min_angle, 50.);
+  // angles other than the input triangles' are named by the caller, and the counts do not change
+  {
+    const BM::Mesh_quality_report named =
+      BM::compute_mesh_quality(m, BM::parameters::surface_angle_source("angles of my own"));
+    assert(named.surface_angle_source == "angles of my own");
+    assert(named.all.share_under_10_not_at_small_surface_angle == r.all.share_under_10_not_at_small_surface_angle);
+    std::ostringstream named_text;
+    BM::IO::write_quality_report_text(named_text, named);
+    assert(named_text.str().find("(angles of my own)") != std::string::npos);
+  }
 
   std::ostringstream json, text;
   BM::IO::write_quality_report_json(json, r);

@@ -1132,6 +1132,24 @@ void test_smooth_turns_triangles_back()
   assert(pts[6].z() == 0.);
 }
 
+// The rule both the smoothing and the slide of curve samples apply to a
+// triangle around a moving point: face the star's side, turn by at most 60
+// degrees, and a triangle facing away may only turn back.
+void test_keeps_facing_star()
+{
+  std::cout << "a moved triangle against the side its star faces\n";
+  typedef K::Vector_3 V;
+  const V up(0, 0, 1), star(0, 0, 3);
+  const double c50 = std::cos(50. * CGAL_PI / 180.), s50 = std::sin(50. * CGAL_PI / 180.);
+  const double c70 = std::cos(70. * CGAL_PI / 180.), s70 = std::sin(70. * CGAL_PI / 180.);
+  assert(BM::internal::keeps_facing_star(V(s50, 0, c50), up, star));   // turned 50 degrees
+  assert(!BM::internal::keeps_facing_star(V(s70, 0, c70), up, star));  // turned 70 degrees
+  assert(!BM::internal::keeps_facing_star(V(0, 0, -1), up, star));     // turned over
+  const V over(0, 0.6, -0.8);                                           // facing away before the move
+  assert(!BM::internal::keeps_facing_star(V(0, 0.8, -0.6), over, star)); // staying over is refused,
+  assert(BM::internal::keeps_facing_star(V(0, 0.6, 0.8), over, star));   // turning back is not, by any angle
+}
+
 // A triangle under 25 degrees between three curve samples (fixed points) -
 // a strip's sides sampled closer than its width, modelA2's last one - is
 // split across its longest free edge when the new point can lift the four
@@ -1303,6 +1321,7 @@ int main(int argc, char** argv)
   test_collapse_crowded_vertex();
   test_smooth_to_best_place();
   test_smooth_turns_triangles_back();
+  test_keeps_facing_star();
   test_split_fixed_triangle();
   test_thin_layer_sides(0.2);
   test_thin_layer_sides(0.1);

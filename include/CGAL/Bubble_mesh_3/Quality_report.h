@@ -215,8 +215,9 @@ struct Mesh_quality_report
   /// what "surface angle" means in this report: `"input triangles"` (given per
   /// boundary triangle: the smallest angle of the input triangle it lies on),
   /// `"boundary facets"` (none given: each boundary triangle's own smallest angle)
-  /// or `"none"` (no boundary triangles); the program writes `"boundary facets,
-  /// or the input corner forcing them"` on re-meshed surfaces (`Corner_forced_facet_angle`)
+  /// or `"none"` (no boundary triangles); the named parameter `surface_angle_source`
+  /// of `compute_mesh_quality()` names other angles (the program passes `"boundary facets,
+  /// or the input corner forcing them"` on re-meshed surfaces, `Corner_forced_facet_angle`)
   std::string surface_angle_source = "none";
   std::optional<std::size_t> number_of_steiner_points;            ///< passed through when known
   std::optional<std::size_t> number_of_input_triangles;           ///< passed through when known

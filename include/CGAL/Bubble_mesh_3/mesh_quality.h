@@ -151,6 +151,7 @@ enum number_of_steiner_points_t { number_of_steiner_points };
 enum number_of_input_triangles_t { number_of_input_triangles };
 enum number_of_input_triangles_kept_whole_t { number_of_input_triangles_kept_whole };
 enum facet_input_min_angle_t { facet_input_min_angle };
+enum surface_angle_source_t { surface_angle_source };
 } // namespace internal_np
 
 namespace parameters {
@@ -167,6 +168,10 @@ CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_input_triangles)
 /// \ingroup PkgBubbleMesh3Ref
 /// `compute_mesh_quality()`: input triangles that are one mesh facet (not split), copied into the report
 CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::size_t, number_of_input_triangles_kept_whole)
+/// \ingroup PkgBubbleMesh3Ref
+/// `compute_mesh_quality()`: what the surface angles are, for `Mesh_quality_report::surface_angle_source`
+/// (say so when `facet_input_min_angle` gives something other than the input triangles' angles)
+CGAL_BUBBLE_MESH_3_NAMED_PARAMETER(std::string, surface_angle_source)
 
 /// \ingroup PkgBubbleMesh3Ref
 /// `to_labeled_tetrahedral_mesh()`: a callable `double(const C3T3::Facet&)` giving the
@@ -659,6 +664,12 @@ leaves out the tetrahedra with a vertex on a surface angle under 10.
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{unknown (not printed)}
   \cgalParamNEnd
+  \cgalParamNBegin{surface_angle_source}
+    \cgalParamDescription{what `mesh.input_min_angles` holds, copied into the report when the mesh has
+      boundary triangles}
+    \cgalParamType{`std::string`}
+    \cgalParamDefault{`"input triangles"` when `mesh.input_min_angles` is given, else `"boundary facets"`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 */
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -676,7 +687,9 @@ Mesh_quality_report compute_mesh_quality(const Labeled_tetrahedral_mesh_3& mesh,
   r.number_of_points = mesh.points.size();
   r.number_of_boundary_triangles = mesh.boundary_triangles.size();
   if(!mesh.boundary_triangles.empty())
-    r.surface_angle_source = mesh.input_min_angles.empty() ? "boundary facets" : "input triangles";
+    r.surface_angle_source =
+      choose_parameter(get_parameter(np, internal_np::surface_angle_source),
+                       std::string(mesh.input_min_angles.empty() ? "boundary facets" : "input triangles"));
   if(!is_default_parameter<NamedParameters, internal_np::number_of_steiner_points_t>::value)
     r.number_of_steiner_points = choose_parameter(get_parameter(np, internal_np::number_of_steiner_points), std::size_t(0));
   if(!is_default_parameter<NamedParameters, internal_np::number_of_input_triangles_t>::value)

@@ -876,23 +876,31 @@ private:
       for(std::size_t i = 0; i < patch_out_[p].size(); ++i)
         for(std::size_t v : patch_out_[p][i])
           if(curve_samples_.count(v)) incident[v].push_back(std::make_pair(p, i));
-    // the smallest angle of v's triangles with v at q, or -1 if one turns over;
+    // the smallest angle of v's triangles with v at q, or -1 if one turns over
+    // (keeps_facing_star(), with the star of each patch along the curve);
     // `under`: how many of them are under the bound
+    std::vector<Vector_3> before;
+    std::map<std::size_t, Vector_3> star; // patch -> the side it faces around v
     auto worst_at = [&](std::size_t v, const Point_3& q, std::size_t& under) {
       double worst = 180.;
       under = 0;
-      for(const auto& pi : incident[v])
+      const auto& around = incident[v];
+      before.clear();
+      star.clear();
+      for(const auto& pi : around)
       {
         const Triangle& t = patch_out_[pi.first][pi.second];
-        std::array<Point_3, 3> now, moved;
-        for(int k = 0; k < 3; ++k)
-        {
-          now[k] = out_points_[t[k]];
-          moved[k] = t[k] == v ? q : now[k];
-        }
-        const Vector_3 n0 = CGAL::cross_product(now[1] - now[0], now[2] - now[0]);
-        const Vector_3 n1 = CGAL::cross_product(moved[1] - moved[0], moved[2] - moved[0]);
-        if(!(n0 * n1 > 0.)) return -1.;
+        before.push_back(remesh_unit_normal(out_points_[t[0]], out_points_[t[1]], out_points_[t[2]]));
+        auto at = star.emplace(pi.first, NULL_VECTOR).first;
+        at->second = at->second + before.back();
+      }
+      for(std::size_t i = 0; i < around.size(); ++i)
+      {
+        const Triangle& t = patch_out_[around[i].first][around[i].second];
+        std::array<Point_3, 3> moved;
+        for(int k = 0; k < 3; ++k) moved[k] = t[k] == v ? q : out_points_[t[k]];
+        if(!keeps_facing_star(remesh_unit_normal(moved[0], moved[1], moved[2]), before[i], star[around[i].first]))
+          return -1.;
         const double a = min_angle_degrees(moved[0], moved[1], moved[2]);
         worst = (std::min)(worst, a);
         if(a < bound) ++under;

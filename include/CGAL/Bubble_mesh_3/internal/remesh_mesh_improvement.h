@@ -43,6 +43,19 @@ typename Kernel_traits<Point_3>::Kernel::Vector_3 remesh_unit_normal(const Point
   return l > 0. ? n / l : n;
 }
 
+// Whether a triangle around a moving point, of unit normal `before` and
+// `after` the move, may take it: it must face `star`, the side its patch
+// faces around the point (the sum of the unit normals there), and turn by at
+// most 60 degrees - unless it faced away before: a sliver turned over where
+// the input patch is wrinkled may only turn back, never stay over (it would
+// slide across its neighbours at a later move).
+template <class Vector_3>
+bool keeps_facing_star(const Vector_3& after, const Vector_3& before, const Vector_3& star)
+{
+  if(!(CGAL::to_double(after * star) > 0.)) return false;
+  return !(CGAL::to_double(before * star) > 0.) || CGAL::to_double(after * before) > 0.5;
+}
+
 // Flips edges of `triangles` (indices into `points`) that are not in
 // `constrained` while the smaller angle of the two triangles grows, the new
 // triangles face the same way and the two old ones are nearly coplanar
@@ -184,9 +197,7 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
     candidates.push_back(centre);
     if(old_min < angle_goal) candidates.push_back(CGAL::midpoint(centre, points[v]));
     const Point_3 old = points[v];
-    // the side of the patch the star around v faces: a triangle facing the
-    // other way (a sliver turned over where the input patch is wrinkled) must
-    // face it again, or a move could slide it over its neighbours
+    // the side of the patch the star around v faces (see keeps_facing_star())
     Vector_3 star(0, 0, 0);
     for(const Vector_3& n : old_normals) star = star + n;
     // the smallest angle around v at the patch point nearest to c, or -1 if a triangle turns over
@@ -197,9 +208,8 @@ std::size_t smooth_free_vertices(std::vector<typename GeomTraits::Point_3>& poin
       {
         const auto& tri = triangles[inc[i]];
         new_min = (std::min)(new_min, min_angle_degrees(points[tri[0]], points[tri[1]], points[tri[2]]));
-        const Vector_3 n = remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]);
-        if(!(CGAL::to_double(n * star) > 0.)) return -1.;
-        if(CGAL::to_double(old_normals[i] * star) > 0. && !(CGAL::to_double(n * old_normals[i]) > 0.5)) return -1.;
+        if(!keeps_facing_star(remesh_unit_normal(points[tri[0]], points[tri[1]], points[tri[2]]), old_normals[i], star))
+          return -1.;
       }
       return new_min;
     };
