@@ -876,24 +876,28 @@ private:
       for(std::size_t i = 0; i < patch_out_[p].size(); ++i)
         for(std::size_t v : patch_out_[p][i])
           if(curve_samples_.count(v)) incident[v].push_back(std::make_pair(p, i));
-    // the smallest angle of v's triangles with v at q, or -1 if one turns over
-    // (keeps_facing_star(), with the star of each patch along the curve);
-    // `under`: how many of them are under the bound
+    // the unit normals of v's triangles where v is now, and the side each
+    // patch along the curve faces around v (their sum there): what
+    // keeps_facing_star() compares a move with, taken once per sample
     std::vector<Vector_3> before;
     std::map<std::size_t, Vector_3> star; // patch -> the side it faces around v
-    auto worst_at = [&](std::size_t v, const Point_3& q, std::size_t& under) {
-      double worst = 180.;
-      under = 0;
-      const auto& around = incident[v];
+    auto take_star = [&](std::size_t v) {
       before.clear();
       star.clear();
-      for(const auto& pi : around)
+      for(const auto& pi : incident[v])
       {
         const Triangle& t = patch_out_[pi.first][pi.second];
         before.push_back(remesh_unit_normal(out_points_[t[0]], out_points_[t[1]], out_points_[t[2]]));
         auto at = star.emplace(pi.first, NULL_VECTOR).first;
         at->second = at->second + before.back();
       }
+    };
+    // the smallest angle of v's triangles with v at q, or -1 if one turns over
+    // (after take_star(v)); `under`: how many of them are under the bound
+    auto worst_at = [&](std::size_t v, const Point_3& q, std::size_t& under) {
+      double worst = 180.;
+      under = 0;
+      const auto& around = incident[v];
       for(std::size_t i = 0; i < around.size(); ++i)
       {
         const Triangle& t = patch_out_[around[i].first][around[i].second];
@@ -921,6 +925,7 @@ private:
           const std::size_t v = line.out_points[k];
           if(!curve_samples_.count(v)) continue;
           std::size_t under_now = 0, under = 0;
+          take_star(v);
           const double now = worst_at(v, out_points_[v], under_now);
           if(!(now < bound)) continue;
           // arc lengths of the neighbours (the line's ends at 0 and its length: a closed line starts where it ends)
