@@ -23,7 +23,10 @@
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
+#include <cstddef>
+#include <cstdint>
 #include <cstring>
+#include <algorithm>
 #include <array>
 #include <iostream>
 #include <memory>
@@ -352,6 +355,85 @@ static void test_strays()
   assert(differ < 1e-9 * r);
 }
 
+// -- 3c. The neighbour grid of balls of unequal radii: every ball j with
+// |p - x_j| < a + b r_j comes once from each of its three visits, with balls
+// from under a sixteenth of the median radius (a line of them, as a strip
+// sampled at its width) to 20 times it, also after insertions; a small
+// ball's query does not scan the whole line, as it did when the small balls
+// shared the median's cells; and a few small balls stay in those cells.
+static void test_bubble_grid()
+{
+  CGAL::Random rng(11);
+  std::vector<double> x, y, z, r;
+  auto add = [&](double px, double py, double pz, double pr) {
+    x.push_back(px); y.push_back(py); z.push_back(pz); r.push_back(pr);
+  };
+  for(int i = 0; i < 3000; ++i) add(rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(0.8, 1.2));
+  const std::size_t line_begin = x.size();
+  for(int i = 0; i < 1200; ++i) add(10. + 0.005 * i, 20. + rng.get_double(-0.005, 0.005), 20., rng.get_double(0.002, 0.005));
+  const std::size_t line_end = x.size();
+  for(int i = 0; i < 20; ++i) add(rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(5., 20.));
+  const double box[6] = {0., 0., 0., 40., 40., 40.};
+  const double reach = 1.5;
+  BM::internal::Bubble_grid packed;
+  packed.build(x.data(), y.data(), z.data(), r.data(), x.size(), box, reach, true);
+  assert(packed.number_of_fine_balls() == line_end - line_begin);
+  // a few small balls do not crowd the median's cells: they stay with the others
+  BM::internal::Bubble_grid few;
+  few.build(x.data(), y.data(), z.data(), r.data(), line_begin + 20, box, reach, true);
+  assert(few.number_of_fine_balls() == 0);
+  // a plain grid that gets the last 50 balls of the line by insertion
+  const std::size_t inserted = 50;
+  std::vector<double> x2(x), y2(y), z2(z), r2(r);
+  // (the plain grid names balls by their index: move the large ones before the inserted ones)
+  for(std::vector<double>* v : {&x2, &y2, &z2, &r2})
+    std::rotate(v->begin() + std::ptrdiff_t(line_end - inserted), v->begin() + std::ptrdiff_t(line_end), v->end());
+  BM::internal::Bubble_grid plain;
+  plain.build(x2.data(), y2.data(), z2.data(), r2.data(), x2.size() - inserted, box, reach);
+  for(std::size_t i = x2.size() - inserted; i < x2.size(); ++i) plain.insert(i, x2[i], y2[i], z2[i], r2[i]);
+  std::size_t queries = 0, largest_small_scan = 0;
+  for(int q = 0; q < 400; ++q)
+  {
+    // half of the queries from balls of the line
+    const bool on_line = q % 2 == 0;
+    const std::size_t i = on_line ? line_begin + std::size_t(rng.get_int(0, int(line_end - line_begin)))
+                                  : std::size_t(rng.get_int(0, int(x.size())));
+    const double px = x[i] + rng.get_double(-0.01, 0.01), py = y[i], pz = z[i];
+    const double a = reach * r[i], b = reach;
+    std::vector<int> seen[4];
+    for(auto& v : seen) v.assign(x.size(), 0);
+    packed.for_each_near(px, py, pz, a, b, [&](std::size_t j) { ++seen[0][j]; });
+    packed.for_each_near_packed(px, py, pz, a, b, [&](std::size_t j, const double* c) {
+      assert(c[0] == x[j] && c[1] == y[j] && c[2] == z[j] && c[3] == r[j]);
+      ++seen[1][j];
+    });
+    std::size_t scanned = 0;
+    packed.for_each_row_in_reach_packed(px, py, pz, a, b, [&](const std::uint32_t* items, const double*, std::size_t count) {
+      for(std::size_t k = 0; k < count; ++k) ++seen[2][items[k]];
+      scanned += count;
+    });
+    plain.for_each_near(px, py, pz, a, b, [&](std::size_t j) { ++seen[3][j]; });
+    for(std::size_t j = 0; j < x.size(); ++j)
+    {
+      for(int v = 0; v < 3; ++v) assert(seen[v][j] <= 1);
+      // (the plain grid's index of ball j)
+      const std::size_t j2 = j < line_end - inserted ? j : j < line_end ? j + 20 : j - inserted;
+      assert(seen[3][j2] <= 1);
+      const double dx = px - x[j], dy = py - y[j], dz = pz - z[j];
+      if(std::sqrt(dx * dx + dy * dy + dz * dz) < a + b * r[j])
+      {
+        for(int v = 0; v < 3; ++v) assert(seen[v][j] == 1);
+        assert(seen[3][j2] == 1);
+      }
+    }
+    if(on_line) largest_small_scan = (std::max)(largest_small_scan, scanned);
+    ++queries;
+  }
+  std::cout << "bubble grid: " << queries << " queries, a query from the line of " << line_end - line_begin
+            << " small balls scans at most " << largest_small_scan << " balls" << std::endl;
+  assert(largest_small_scan < (line_end - line_begin) / 4);
+}
+
 // a deterministic cloud of `count` points in [m, L-m]^3
 static std::vector<Bubble> cloud(std::size_t count, double L, double m, double r, unsigned seed)
 {
@@ -656,6 +738,7 @@ int main()
   test_lattice_at_rest(false);
   test_lattice_at_rest(true);
   test_strays();
+  test_bubble_grid();
   std::vector<Bubble> one, two;
   test_cloud(one, two);
   // -- 5. bit-identical with 1 and 2 threads

@@ -294,13 +294,22 @@ the other bubble's radius), so the reach depends on the largest radius
 around. One grid sized for the largest radius would make a fine part of a
 model, next to a few coarse surface triangles, scan whole regions; so balls
 up to twice the median radius go in a grid sized for them, and the few larger
-ones in a second, coarser grid. A query visits the small grid, then the large
-one, each in its fixed order.
+ones in a second, coarser grid. Balls under `fine_ratio` of the median (a
+strip sampled at its width, a floor set low by hand), when they crowd the
+median's cells, go in a third grid sized for them over their own box: in the
+median's cells each of them scanned every other one of its cell, thousands
+along CloudSpin's squeezed strip sampled at 0.3 m among bubbles of tens of
+metres (the list rebuild was 41 % of the run). A query visits the small grid,
+the large one, then the fine one if it has balls and the query meets their
+box, each in its fixed order.
 */
 class Bubble_grid
 {
 public:
   typedef Neighbor_grid::Index Index;
+
+  /// balls under this share of the median radius go in the fine grid
+  static constexpr double fine_ratio = 1. / 16.;
 
   /// files balls `0..n-1`; `reach_factor * (r_i + r_j)` is the largest reach that queries will ask for.
   /// With `packed`, the cells of the small grid are sized for two balls of the median radius,
@@ -319,24 +328,57 @@ public:
       largest = *std::max_element(r, r + n);
     }
     threshold_ = 2. * median;
-    r_small_ = 0.;
+    double r_upto = 0.; // the largest radius up to the threshold
+    for(std::size_t i = 0; i < n; ++i)
+      if(r[i] <= threshold_) r_upto = (std::max)(r_upto, r[i]);
+    const double small_cell = reach_factor * 2. * (std::max)(packed ? median : r_upto, 1e-300);
+    fine_threshold_ = fine_balls_crowd(x, y, z, r, n, box, small_cell, fine_ratio * median) ? fine_ratio * median : 0.;
+    r_small_ = r_fine_ = 0.;
     small_.clear();
     large_.clear();
+    fine_.clear();
+    std::vector<double> fine_radii;
     for(std::size_t i = 0; i < n; ++i)
     {
-      if(r[i] <= threshold_) { small_.push_back(Index(i)); r_small_ = (std::max)(r_small_, r[i]); }
+      if(r[i] < fine_threshold_)
+      {
+        fine_.push_back(Index(i));
+        fine_radii.push_back(r[i]);
+        r_fine_ = (std::max)(r_fine_, r[i]);
+      }
+      else if(r[i] <= threshold_) { small_.push_back(Index(i)); r_small_ = (std::max)(r_small_, r[i]); }
       else large_.push_back(Index(i));
     }
     r_large_ = largest;
-    const double small_cell = reach_factor * 2. * (std::max)(packed ? median : r_small_, 1e-300);
     setup(small_grid_, small_, x, y, z, packed ? r : nullptr, box, small_cell);
     setup(large_grid_, large_, x, y, z, packed ? r : nullptr, box, reach_factor * 2. * (std::max)(r_large_, 1e-300));
+    if(fine_.empty()) return;
+    double fine_median = r_fine_;
+    if(packed)
+    {
+      std::nth_element(fine_radii.begin(), fine_radii.begin() + fine_radii.size() / 2, fine_radii.end());
+      fine_median = fine_radii[fine_radii.size() / 2];
+    }
+    for(int d = 0; d < 3; ++d)
+    {
+      fine_box_[d] = (std::numeric_limits<double>::max)();
+      fine_box_[d + 3] = -(std::numeric_limits<double>::max)();
+    }
+    for(Index i : fine_) extend_fine_box(x[i], y[i], z[i]);
+    setup(fine_grid_, fine_, x, y, z, packed ? r : nullptr, fine_box_,
+          reach_factor * 2. * (std::max)(fine_median, 1e-300));
   }
 
   /// adds ball `i` (a name beyond the `n` of `build()`) at `(x,y,z)` with radius `r`
   void insert(std::size_t i, double x, double y, double z, double r)
   {
-    if(r <= threshold_ || large_.empty())
+    if(!fine_.empty() && r < fine_threshold_)
+    {
+      fine_grid_.insert(i, x, y, z);
+      r_fine_ = (std::max)(r_fine_, r);
+      extend_fine_box(x, y, z);
+    }
+    else if(r <= threshold_ || large_.empty())
     {
       small_grid_.insert(i, x, y, z);
       r_small_ = (std::max)(r_small_, r);
@@ -352,6 +394,8 @@ public:
     small_grid_.for_each_near(x, y, z, a + b * r_small_, f);
     if(!large_.empty())
       large_grid_.for_each_near(x, y, z, a + b * r_large_, f);
+    if(meets_fine_box(x, y, z, a + b * r_fine_))
+      fine_grid_.for_each_near(x, y, z, a + b * r_fine_, f);
   }
 
   /// the same as `for_each_near()` with `f(j, q)`, q pointing to x, y, z, r of ball j;
@@ -362,6 +406,8 @@ public:
     small_grid_.for_each_near_packed(x, y, z, a + b * r_small_, f);
     if(!large_.empty())
       large_grid_.for_each_near_packed(x, y, z, a + b * r_large_, f);
+    if(meets_fine_box(x, y, z, a + b * r_fine_))
+      fine_grid_.for_each_near_packed(x, y, z, a + b * r_fine_, f);
   }
 
   /// the visit of `for_each_near_packed()` for the balls j with |p - x_j| < a + b * r_j only
@@ -373,9 +419,14 @@ public:
     small_grid_.for_each_row_in_ball_packed(x, y, z, a + b * r_small_, g);
     if(!large_.empty())
       large_grid_.for_each_row_in_ball_packed(x, y, z, a + b * r_large_, g);
+    if(meets_fine_box(x, y, z, a + b * r_fine_))
+      fine_grid_.for_each_row_in_ball_packed(x, y, z, a + b * r_fine_, g);
   }
 
-  double largest_radius() const { return (std::max)(r_small_, r_large_); }
+  double largest_radius() const { return (std::max)({r_small_, r_large_, r_fine_}); }
+
+  /// the number of balls `build()` put in the fine grid
+  std::size_t number_of_fine_balls() const { return fine_.size(); }
 
 private:
   static void setup(Neighbor_grid& grid, const std::vector<Index>& members, const double* x, const double* y,
@@ -391,9 +442,57 @@ private:
     grid.build(gx.data(), gy.data(), gz.data(), m, members.data(), r ? gr.data() : nullptr);
   }
 
-  double threshold_ = 0., r_small_ = 0., r_large_ = 0.;
-  std::vector<Index> small_, large_;
-  Neighbor_grid small_grid_, large_grid_;
+  // Whether the balls under `below` crowd the small grid's cells of size `cell`: their
+  // scans of the cells they share would cost more than `crowding` candidates per ball
+  // of the whole set, where a query's usual scan is a few dozen. A few of them (a thin
+  // layer's floor: modelA5 has at most 380 in 30,000, 221 in one cell) stay with the
+  // others, visited in the same order as before the fine grid.
+  static bool fine_balls_crowd(const double* x, const double* y, const double* z, const double* r, std::size_t n,
+                               const double box[6], double cell, double below)
+  {
+    static constexpr double crowding = 64.;
+    std::size_t candidates = 0;
+    for(std::size_t i = 0; i < n; ++i) candidates += r[i] < below ? 1 : 0;
+    if(double(candidates) * double(candidates) <= crowding * double(n)) return false;
+    Neighbor_grid probe; // (only its cells are used)
+    probe.set_domain(box[0] - cell, box[1] - cell, box[2] - cell, box[3] + cell, box[4] + cell, box[5] + cell, cell,
+                     4 * n + 64);
+    std::vector<std::size_t> count(probe.number_of_cells(), 0);
+    double pairs = 0.;
+    for(std::size_t i = 0; i < n; ++i)
+      if(r[i] < below) pairs += double(2 * count[probe.cell_of(x[i], y[i], z[i])]++ + 1); // c^2 - (c-1)^2
+    return pairs > crowding * double(n);
+  }
+
+  void extend_fine_box(double x, double y, double z)
+  {
+    const double p[3] = {x, y, z};
+    for(int d = 0; d < 3; ++d)
+    {
+      fine_box_[d] = (std::min)(fine_box_[d], p[d]);
+      fine_box_[d + 3] = (std::max)(fine_box_[d + 3], p[d]);
+    }
+  }
+
+  // whether the cube of half-side `radius` around (x,y,z) meets the box of the fine
+  // balls (the margin covers rounding; the grid files a ball outside its domain in a
+  // border cell, but no ball lies outside this box)
+  bool meets_fine_box(double x, double y, double z, double radius) const
+  {
+    if(fine_.empty()) return false;
+    const double p[3] = {x, y, z};
+    for(int d = 0; d < 3; ++d)
+    {
+      const double slack = 1e-9 * (radius + std::abs(p[d]));
+      if(p[d] + radius + slack < fine_box_[d] || p[d] - radius - slack > fine_box_[d + 3]) return false;
+    }
+    return true;
+  }
+
+  double threshold_ = 0., fine_threshold_ = 0., r_small_ = 0., r_large_ = 0., r_fine_ = 0.;
+  double fine_box_[6] = {0., 0., 0., 0., 0., 0.};
+  std::vector<Index> small_, large_, fine_;
+  Neighbor_grid small_grid_, large_grid_, fine_grid_;
 };
 
 /*
