@@ -370,7 +370,7 @@ static void test_bubble_grid()
   };
   for(int i = 0; i < 3000; ++i) add(rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(0.8, 1.2));
   const std::size_t line_begin = x.size();
-  for(int i = 0; i < 1200; ++i) add(10. + 0.005 * i, 20. + rng.get_double(-0.005, 0.005), 20., rng.get_double(0.002, 0.005));
+  for(int i = 0; i < 2400; ++i) add(10. + 0.0025 * i, 20. + rng.get_double(-0.005, 0.005), 20., rng.get_double(0.001, 0.0025));
   const std::size_t line_end = x.size();
   for(int i = 0; i < 20; ++i) add(rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(0., 40.), rng.get_double(5., 20.));
   const double box[6] = {0., 0., 0., 40., 40., 40.};

@@ -444,13 +444,14 @@ private:
 
   // Whether the balls under `below` crowd the small grid's cells of size `cell`: their
   // scans of the cells they share would cost more than `crowding` candidates per ball
-  // of the whole set, where a query's usual scan is a few dozen. A few of them (a thin
-  // layer's floor: modelA5 has at most 380 in 30,000, 221 in one cell) stay with the
-  // others, visited in the same order as before the fine grid.
+  // of the whole set, several times a query's usual scan (a few dozen). Fewer (a thin
+  // layer's floor: modelA5 has at most 380 in 30,000, 221 in one cell; CloudSpin's
+  // default mesh reaches 91 per ball) stay with the others, visited in the same order
+  // as before the fine grid, so that those meshes do not change.
   static bool fine_balls_crowd(const double* x, const double* y, const double* z, const double* r, std::size_t n,
                                const double box[6], double cell, double below)
   {
-    static constexpr double crowding = 64.;
+    static constexpr double crowding = 256.;
     std::size_t candidates = 0;
     for(std::size_t i = 0; i < n; ++i) candidates += r[i] < below ? 1 : 0;
     if(double(candidates) * double(candidates) <= crowding * double(n)) return false;
