@@ -328,36 +328,45 @@ public:
       largest = *std::max_element(r, r + n);
     }
     threshold_ = 2. * median;
-    double r_upto = 0.; // the largest radius up to the threshold
-    for(std::size_t i = 0; i < n; ++i)
-      if(r[i] <= threshold_) r_upto = (std::max)(r_upto, r[i]);
-    const double small_cell = reach_factor * 2. * (std::max)(packed ? median : r_upto, 1e-300);
-    fine_threshold_ = fine_balls_crowd(x, y, z, r, n, box, small_cell, fine_ratio * median) ? fine_ratio * median : 0.;
+    fine_threshold_ = 0.;
     r_small_ = r_fine_ = 0.;
     small_.clear();
     large_.clear();
     fine_.clear();
-    std::vector<double> fine_radii;
     for(std::size_t i = 0; i < n; ++i)
     {
-      if(r[i] < fine_threshold_)
-      {
-        fine_.push_back(Index(i));
-        fine_radii.push_back(r[i]);
-        r_fine_ = (std::max)(r_fine_, r[i]);
-      }
-      else if(r[i] <= threshold_) { small_.push_back(Index(i)); r_small_ = (std::max)(r_small_, r[i]); }
+      if(r[i] <= threshold_) { small_.push_back(Index(i)); r_small_ = (std::max)(r_small_, r[i]); }
       else large_.push_back(Index(i));
     }
     r_large_ = largest;
+    const double small_cell = reach_factor * 2. * (std::max)(packed ? median : r_small_, 1e-300);
     setup(small_grid_, small_, x, y, z, packed ? r : nullptr, box, small_cell);
     setup(large_grid_, large_, x, y, z, packed ? r : nullptr, box, reach_factor * 2. * (std::max)(r_large_, 1e-300));
-    if(fine_.empty()) return;
-    double fine_median = r_fine_;
+    if(!fine_balls_crowd(x, y, z, r, n, fine_ratio * median)) return;
+
+    // the crowding balls leave the small grid for a grid of their own, sized for them over their box
+    fine_threshold_ = fine_ratio * median;
+    std::vector<Index> kept;
+    std::vector<double> fine_radii;
+    r_small_ = 0.;
+    for(Index i : small_)
+    {
+      if(r[i] < fine_threshold_)
+      {
+        fine_.push_back(i);
+        fine_radii.push_back(r[i]);
+        r_fine_ = (std::max)(r_fine_, r[i]);
+      }
+      else { kept.push_back(i); r_small_ = (std::max)(r_small_, r[i]); }
+    }
+    small_.swap(kept);
+    setup(small_grid_, small_, x, y, z, packed ? r : nullptr, box, small_cell);
+    // (the cells fit two balls of the fine median when packed, of the largest fine ball if not)
+    double cell_radius = r_fine_;
     if(packed)
     {
       std::nth_element(fine_radii.begin(), fine_radii.begin() + fine_radii.size() / 2, fine_radii.end());
-      fine_median = fine_radii[fine_radii.size() / 2];
+      cell_radius = fine_radii[fine_radii.size() / 2];
     }
     for(int d = 0; d < 3; ++d)
     {
@@ -366,7 +375,7 @@ public:
     }
     for(Index i : fine_) extend_fine_box(x[i], y[i], z[i]);
     setup(fine_grid_, fine_, x, y, z, packed ? r : nullptr, fine_box_,
-          reach_factor * 2. * (std::max)(fine_median, 1e-300));
+          reach_factor * 2. * (std::max)(cell_radius, 1e-300));
   }
 
   /// adds ball `i` (a name beyond the `n` of `build()`) at `(x,y,z)` with radius `r`
@@ -442,27 +451,31 @@ private:
     grid.build(gx.data(), gy.data(), gz.data(), m, members.data(), r ? gr.data() : nullptr);
   }
 
-  // Whether the balls under `below` crowd the small grid's cells of size `cell`: their
+  // Whether the balls under `below` crowd the cells of the small grid just built: their
   // scans of the cells they share would cost more than `crowding` candidates per ball
   // of the whole set, several times a query's usual scan (a few dozen). Fewer (a thin
   // layer's floor: modelA5 has at most 380 in 30,000, 221 in one cell; CloudSpin's
   // default mesh reaches 91 per ball) stay with the others, visited in the same order
   // as before the fine grid, so that those meshes do not change.
-  static bool fine_balls_crowd(const double* x, const double* y, const double* z, const double* r, std::size_t n,
-                               const double box[6], double cell, double below)
+  bool fine_balls_crowd(const double* x, const double* y, const double* z, const double* r, std::size_t n,
+                        double below) const
   {
     static constexpr double crowding = 256.;
-    std::size_t candidates = 0;
-    for(std::size_t i = 0; i < n; ++i) candidates += r[i] < below ? 1 : 0;
-    if(double(candidates) * double(candidates) <= crowding * double(n)) return false;
-    Neighbor_grid probe; // (only its cells are used)
-    probe.set_domain(box[0] - cell, box[1] - cell, box[2] - cell, box[3] + cell, box[4] + cell, box[5] + cell, cell,
-                     4 * n + 64);
-    std::vector<std::size_t> count(probe.number_of_cells(), 0);
-    double pairs = 0.;
-    for(std::size_t i = 0; i < n; ++i)
-      if(r[i] < below) pairs += double(2 * count[probe.cell_of(x[i], y[i], z[i])]++ + 1); // c^2 - (c-1)^2
-    return pairs > crowding * double(n);
+    std::vector<std::size_t> cells;
+    for(Index i : small_)
+      if(r[i] < below) cells.push_back(small_grid_.cell_of(x[i], y[i], z[i]));
+    const double bound = crowding * double(n);
+    if(double(cells.size()) * double(cells.size()) <= bound) return false; // even all in one cell would not
+    std::sort(cells.begin(), cells.end());
+    double pairs = 0.; // the sum over cells of their count squared
+    for(std::size_t k = 0; k < cells.size();)
+    {
+      std::size_t e = k;
+      while(e < cells.size() && cells[e] == cells[k]) ++e;
+      pairs += double(e - k) * double(e - k);
+      k = e;
+    }
+    return pairs > bound;
   }
 
   void extend_fine_box(double x, double y, double z)
