@@ -8,13 +8,14 @@
 // new triangles to the input gives, curve Hausdorff distance, validity of
 // the output (conforming, closed oriented regions, no crossing) and time.
 //
-// Usage: bench_remesh_surfaces [--details] [--size L] [--min-size L] [--refine-ribbons] [--balance-volumes] MODEL [MODEL ...]
+// Usage: bench_remesh_surfaces [--details] [--size L] [--min-size L] [--refine-ribbons] [--no-balance-volumes] MODEL [MODEL ...]
 //   (default: the bundled model and every ../shared/data/geomodels model of issue 9)
 //   --details  also lists the triangles under 25 degrees outside the wedges of sharp input corners,
 //              and the validation problems of an invalid output
 //   --min-size L  the thickness rule's floor (minimum_edge_length(L); default a tenth of the smallest patch size)
 //   --refine-ribbons  the sizing field's ribbon rule (refine_ribbons(true))
-//   --balance-volumes  slide the free points until every region has its input volume (keep_region_volumes(true))
+//   --no-balance-volumes  leave the volumes as the chords make them (keep_region_volumes(false)); by default
+//                         the free points slide until every region has its input volume
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bubble_mesh_3/Geological_model_3.h>
@@ -139,7 +140,7 @@ void details(const Model& output, const BM::Surface_remeshing_report& r, const B
 
 int main(int argc, char** argv)
 {
-  bool show_details = false, ribbons = false, balance = false;
+  bool show_details = false, ribbons = false, balance = true;
   double size = 0., min_size = 0.;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
@@ -160,10 +161,10 @@ int main(int argc, char** argv)
       (a == "--size" ? size : min_size) = v;
     }
     else if(a == "--refine-ribbons") ribbons = true;
-    else if(a == "--balance-volumes") balance = true;
+    else if(a == "--balance-volumes" || a == "--no-balance-volumes") balance = a == "--balance-volumes";
     else if(a == "--help" || a == "-h")
     {
-      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--min-size L] [--refine-ribbons] [--balance-volumes] [MODEL ...]\n";
+      std::cout << "usage: bench_remesh_surfaces [--details] [--size L] [--min-size L] [--refine-ribbons] [--no-balance-volumes] [MODEL ...]\n";
       return EXIT_SUCCESS;
     }
     else files.push_back(a);

@@ -173,13 +173,14 @@ const char* usage_text =
 "                             by its width instead of spanning it with needles. Better\n"
 "                             elements there, many more of them (modelA5: tetrahedra\n"
 "                             under 10 degrees 395 -> 221, run time 241 -> 564 s)\n"
-"  --balance-volumes          with --remesh-surfaces: slide the new points along the input\n"
-"                             surfaces until every region has its input volume again (the\n"
-"                             new triangles are chords across the bends of curved surfaces:\n"
-"                             without it a region's volume changes by about 1e-4 on real\n"
-"                             horizons). A convex body faceted coarsely (a tunnel) cannot\n"
-"                             be balanced so: its surfaces are re-meshed again with every\n"
-"                             crease kept (about twice the tetrahedra there)\n"
+"  --no-balance-volumes       with --remesh-surfaces: leave the region volumes as the new\n"
+"                             triangles make them. By default (--balance-volumes) the new\n"
+"                             points slide along the input surfaces until every region has\n"
+"                             its input volume again: the new triangles are chords across\n"
+"                             the bends of curved surfaces, which change a region's volume\n"
+"                             by about 1e-4 on real horizons. A convex body faceted coarsely\n"
+"                             (a tunnel) cannot be balanced so: its surfaces are re-meshed\n"
+"                             again with every crease kept (about twice the tetrahedra there)\n"
 "  --population-rounds N      most rounds of population control (bubbles deleted where\n"
 "                             crowded, inserted in gaps), each followed by a relaxation\n"
 "                             (default 12). Fewer is faster: 5 shortened the relaxation by\n"
@@ -271,7 +272,8 @@ struct Options
   double feature_angle = 30.;
   bool feature_angle_given = false;
   bool refine_ribbons = false;
-  bool balance_volumes = false;
+  bool balance_volumes = true;
+  std::string balance_flag; // the last of --balance-volumes / --no-balance-volumes given
   // --region-size-factor and --surface-size-factor as given: name or number, factor
   std::vector<std::pair<std::string, double> > region_size_factors;
   std::vector<std::pair<std::string, double> > surface_size_factors;
@@ -389,7 +391,11 @@ Options parse_options(int argc, char** argv)
       o.layer_elements_given = true;
     }
     else if(a == "--refine-ribbons") o.refine_ribbons = true;
-    else if(a == "--balance-volumes") o.balance_volumes = true;
+    else if(a == "--balance-volumes" || a == "--no-balance-volumes")
+    {
+      o.balance_volumes = a == "--balance-volumes";
+      o.balance_flag = a;
+    }
     else if(a == "--region-size-factor") o.region_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--surface-size-factor") o.surface_size_factors.push_back(parse_name_factor(a, value(a)));
     else if(a == "--population-rounds") o.population_rounds = parse_count(a, value(a), "rounds", 1000.);
@@ -452,8 +458,8 @@ Options parse_options(int argc, char** argv)
     usage_error("--feature-angle is a rule of --remesh-surfaces: give both");
   if(o.refine_ribbons && !o.remesh_surfaces)
     usage_error("--refine-ribbons is a rule of --remesh-surfaces: give both");
-  if(o.balance_volumes && !o.remesh_surfaces)
-    usage_error("--balance-volumes is a rule of --remesh-surfaces (without it the surfaces and volumes are kept "
+  if(!o.balance_flag.empty() && !o.remesh_surfaces)
+    usage_error(o.balance_flag + " is a rule of --remesh-surfaces (without it the surfaces and volumes are kept "
                 "exactly): give both");
   if(!o.surface_size_factors.empty() && !o.remesh_surfaces)
     usage_error("--surface-size-factor sizes the re-meshed surfaces: give --remesh-surfaces too (without it the "
@@ -983,8 +989,8 @@ int main(int argc, char** argv)
                        "degrees); a smaller --curvature-angle or --size shrinks the change, and without "
                        "--remesh-surfaces the surfaces and volumes are kept exactly\n";
         else
-          std::cout << ": the new triangles cut across the bends of curved surfaces; with --balance-volumes the "
-                       "new points slide along the input surfaces until every region has its volume back, and "
+          std::cout << ": the new triangles cut across the bends of curved surfaces; without --no-balance-volumes "
+                       "the new points slide along the input surfaces until every region has its volume back, and "
                        "where the bends all turn one way (a convex body faceted coarsely) the body's surfaces are "
                        "re-meshed with their creases kept; a smaller --curvature-angle shrinks the change\n";
         std::cout.precision(precision);

@@ -166,35 +166,35 @@ if /usr/bin/python3 -c "import gmsh" 2>/dev/null; then
   volumes="$(meshed_volumes "$tmp/tunnel_summary.json" "$tmp/tunnel_quality.json")"
   echo "  fault-and-tunnel model: $volumes"
   check "fault-and-tunnel model: 8 regions, each meshed with its volume" test "$volumes" = "8 regions, all meshed with their volumes"
-  # re-meshed, the tunnel's 16 facets become fewer chords: the program says which volumes changed.
-  # This run is also the unfactored side of the size-factor pair below, so it has 2 edges across
+  # re-meshed without the balance, the tunnel's 16 facets become fewer chords: the program says which
+  # volumes changed. This run is also the unfactored side of the size-factor pair below, so it has 2 edges across
   # thin layers, where that pair's figures were measured (at the default 1.63 the run without
   # factors already has 26,868 tetrahedra in foot_0, 19,575 at 2, and the factor gives 1.49
   # times as many)
   run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_remeshed.mesh" \
-      --quality-json "$tmp/tunnel_remeshed_q.json" --layer-elements 2
+      --quality-json "$tmp/tunnel_remeshed_q.json" --layer-elements 2 --no-balance-volumes
   check "fault-and-tunnel model re-meshed exits 0" test "$rc" -eq 0
   check "re-meshed: the note names the tunnel whose volume changed" contains "$out" "note: re-meshing changed the volume of region 6 'tunnel_bottom' by -"
   # every new triangle cuts into the tunnel: slides along its facets cannot give the volume back,
-  # so with --balance-volumes the tunnel's surfaces are re-meshed again with their creases kept
-  run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_balanced.mesh" --balance-volumes
-  check "fault-and-tunnel model re-meshed with --balance-volumes exits 0" test "$rc" -eq 0
-  check "re-meshed with --balance-volumes: the tunnel's surfaces keep their creases" \
+  # so the balance (the default) re-meshes the tunnel's surfaces again with their creases kept
+  run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_balanced.mesh"
+  check "fault-and-tunnel model re-meshed with the balance (the default) exits 0" test "$rc" -eq 0
+  check "re-meshed with the balance (the default): the tunnel's surfaces keep their creases" \
     contains "$out" "surfaces of convex, coarsely faceted bodies re-meshed with every crease kept"
   tunnel_change="$(sed -n 's/.*largest region volume change \([0-9.e+-]*\).*/\1/p' <<<"$out" | head -1)"
-  echo "  fault-and-tunnel model with --balance-volumes: largest region volume change $tunnel_change"
-  check "re-meshed with --balance-volumes: every region keeps its volume within 1e-6" \
+  echo "  fault-and-tunnel model with the balance: largest region volume change $tunnel_change"
+  check "re-meshed with the balance (the default): every region keeps its volume within 1e-6" \
     /usr/bin/python3 -c "import sys; assert float(sys.argv[1]) < 1e-6" "$tunnel_change"
-  check "re-meshed with --balance-volumes: no note says a volume changed" bash -c '! grep -q "changed the volume" <<<"$1"' _ "$out"
+  check "re-meshed with the balance (the default): no note says a volume changed" bash -c '! grep -q "changed the volume" <<<"$1"' _ "$out"
   # between the kept creases the tunnel lies flat, where slides change no volume: the balance
   # moves no point (before session 58's guards it slid 24 points for nothing)
-  check "re-meshed with --balance-volumes: no point slides on the faceted tunnel" bash -c '! grep -q "points slid along" <<<"$1"' _ "$out"
+  check "re-meshed with the balance (the default): no point slides on the faceted tunnel" bash -c '! grep -q "points slid along" <<<"$1"' _ "$out"
   # a region and a surface asked finer: more tetrahedra in the region (4.6 times with population
   # control, 2.3 without), more triangles on foot_2's outer walls (4.0 times; a surface whose
   # sizes the thin-layer rule sets, as the small fault's, gains only where the target binds)
   run "$tmp/tunnel.obj" --remesh-surfaces --population-rounds 0 --threads 2 -o "$tmp/tunnel_factors.mesh" \
       --quality-json "$tmp/tunnel_factors_q.json" --region-size-factor foot_0=0.5 --surface-size-factor foot_2/outside=0.5 \
-      --layer-elements 2
+      --layer-elements 2 --no-balance-volumes
   check "re-meshed with size factors exits 0" test "$rc" -eq 0
   check "size factors are listed" contains "$out" "size factor 0.5 in region 1 'foot_0'"
   check "region foot_0 at 0.5: over 1.5 times the tetrahedra, the other regions' volumes unchanged; foot_2/outside at 0.5: over twice the triangles" \
@@ -237,13 +237,13 @@ PY
   check "--curvature-angle without --remesh-surfaces exits 2" test "$rc" -eq 2
   check "--curvature-angle without --remesh-surfaces says so" contains "$err" "--curvature-angle is a rule of --remesh-surfaces"
   # a folded horizon (an anticline) re-meshed coarse: its chords change the two bodies' volumes
-  # (2.3e-4 here) until --balance-volumes slides the new points along it, and the tetrahedra have each
+  # (2.3e-4 here) until the balance (the default) slides the new points along it, and the tetrahedra have each
   # body's input volume (at 8 % of the diagonal nearly every new point is within two edges of a curve
   # and stays: nothing is balanced)
   /usr/bin/python3 "$root/bench/make_crossing_faults_model.py" "$tmp/fold.obj" --edge 80 >/dev/null
   run "$tmp/fold.obj" --check --summary-json "$tmp/fold_summary.json"
   run "$tmp/fold.obj" --remesh-surfaces --size 4% --layer-elements 0 --population-rounds 0 --threads 2 \
-      -o "$tmp/fold.mesh" --quality-json "$tmp/fold_q.json" --balance-volumes
+      -o "$tmp/fold.mesh" --quality-json "$tmp/fold_q.json"
   check "folded model re-meshed exits 0" test "$rc" -eq 0
   check "folded model re-meshed: the chords changed a volume by over 1e-5, and points slid" /usr/bin/python3 - "$out" <<'PY'
 import re, sys
@@ -272,7 +272,7 @@ PY
   # needle) can have none of its points moved and keeps what its chords cut off (-1.4 %). Before, it
   # held back every step, and all 9 regions kept their chords' errors (5.6e-6 to 1.5e-4); now the other
   # 8 share what the lens lost (the walls are flat: their total cannot change), 5.7e-7 each
-  run "$tmp/graben.obj" --remesh-surfaces --balance-volumes --size 400 --layer-elements 1 --population-rounds 0 \
+  run "$tmp/graben.obj" --remesh-surfaces --size 400 --layer-elements 1 --population-rounds 0 \
       --threads 2 -o "$tmp/graben_balanced.mesh" --quality-json "$tmp/graben_balanced_q.json"
   check "graben model re-meshed with the balance exits 0" test "$rc" -eq 0
   check "graben model re-meshed with the balance: only the lens is left out of it" \
@@ -555,7 +555,10 @@ check "--help lists --refine-ribbons" bash -c "'$exe' --help | grep -q -- --refi
 run "$tmp/slab_box.obj" --balance-volumes
 check "--balance-volumes without --remesh-surfaces exits 2" test "$rc" -eq 2
 check "--balance-volumes without --remesh-surfaces says so" contains "$err" "--balance-volumes is a rule of --remesh-surfaces"
-check "--help lists --balance-volumes" bash -c "'$exe' --help | grep -q -- --balance-volumes"
+run "$tmp/slab_box.obj" --no-balance-volumes
+check "--no-balance-volumes without --remesh-surfaces exits 2" test "$rc" -eq 2
+check "--no-balance-volumes without --remesh-surfaces says so" contains "$err" "--no-balance-volumes is a rule of --remesh-surfaces"
+check "--help lists --no-balance-volumes" bash -c "'$exe' --help | grep -q -- --no-balance-volumes"
 
 # --population-rounds: with 0 no pass thins the initial bubbles (placed about 8 times
 # too dense), so the bundled model keeps more of them than with population control

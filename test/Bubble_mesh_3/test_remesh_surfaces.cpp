@@ -667,9 +667,10 @@ void test_overhang()
   check_remeshed(input, output, r, field, given, false, true);
   assert(r.number_of_volume_balancing_steps > 0 && r.number_of_volume_balancing_points > 0);
 
-  // without the balance (the default): the chords' error, which the balance started from
+  // without the balance: the chords' error, which the balance started from
   Model unbalanced;
-  const BM::Surface_remeshing_report u = BM::remesh_surfaces(input, unbalanced, np);
+  const BM::Surface_remeshing_report u =
+    BM::remesh_surfaces(input, unbalanced, BM::parameters::keep_region_volumes(false, np));
   std::cout << "  without the balance: largest relative volume error " << u.max_relative_volume_error << "\n";
   assert(u.max_relative_volume_error > 1e-6 && u.max_relative_volume_error < 1e-3);
   assert(u.number_of_volume_balancing_steps == 0 && u.volume_error_before_balancing == 0.);
@@ -829,7 +830,7 @@ void test_faceted_body()
   const Model input = pipe_model();
   const auto np = BM::parameters::edge_length(1.);
   Model chords;
-  const BM::Surface_remeshing_report u = BM::remesh_surfaces(input, chords, np);
+  const BM::Surface_remeshing_report u = BM::remesh_surfaces(input, chords, BM::parameters::keep_region_volumes(false, np));
   std::cout << "  without the balance: largest relative volume error " << u.max_relative_volume_error << "\n";
   assert(u.max_relative_volume_error > 1e-4);
   assert(u.number_of_faceted_patches == 0);

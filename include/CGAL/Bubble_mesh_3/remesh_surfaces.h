@@ -239,7 +239,7 @@ public:
     double angle_bound = 25.;
     std::size_t relaxation_steps = 40;
     std::size_t population_rounds = 3;
-    bool keep_region_volumes = false;
+    bool keep_region_volumes = true;
     // patches whose free points the volume balance leaves where they are:
     // re-meshed with their creases kept, they lie flat between them, where a
     // slide changes no volume and the balance's steps would only wander
@@ -1483,7 +1483,7 @@ Every new point lies on the input patch (it is a point of an input
 triangle of the same patch, up to rounding). On a curved input patch a new
 triangle is a chord across the input's creases, which changes the volumes
 of the regions on either side (by 1e-4 to 6e-4 on the models of the test
-data). With `keep_region_volumes(true)` the free points then slide
+data). With `keep_region_volumes(true)`, the default, the free points then slide
 along their input triangles until every region has its input volume again
 (Newton steps on the region volumes, each the smallest move of the free
 points that corrects all regions at once, a move kept only when no triangle
@@ -1570,7 +1570,7 @@ below and those of `Remeshing_sizing_field` and `detect_model_features()`
   \cgalParamNBegin{keep_region_volumes}
     \cgalParamDescription{slide the free points along the input surface until every region has its input volume (see above)}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
+    \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{sizing_field_output}
     \cgalParamDescription{receives the sizing field used in the end: the one built from `np`, plus the spacing of the curve points that had to be kept}
@@ -1610,7 +1610,7 @@ Surface_remeshing_report remesh_surfaces(const Geological_model_3<GeomTraits>& i
     choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(40));
   settings.population_rounds =
     choose_parameter(get_parameter(np, internal_np::number_of_population_steps), std::size_t(3));
-  settings.keep_region_volumes = choose_parameter(get_parameter(np, internal_np::keep_region_volumes), false);
+  settings.keep_region_volumes = choose_parameter(get_parameter(np, internal_np::keep_region_volumes), true);
   settings.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   settings.parallel = internal::Runs_in_parallel<ConcurrencyTag>::value;
   report.method = settings.method;
